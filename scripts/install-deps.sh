@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages wavecontact needs, only those that are missing.
+# Usage (root): scripts/install-deps.sh
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libginac-dev libcln-dev          # derive/: symbolic engine and exact arithmetic
+  libeigen3-dev                    # runtime/: array API
+  libboost-test-dev libboost-math-dev  # tests/ (Boost.Test), runtime/ (root finding, quadrature)
+  libcli11-dev                     # the wavecontact CLI
+  gnuplot-nox                      # reproduce: PNG plots
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q '^install ok installed$'; then
+    missing+=("$p")
+  fi
+done
+
+if ((${#missing[@]})); then
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "install-deps: all packages present"
+fi
