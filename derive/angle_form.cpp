@@ -1,0 +1,211 @@
+#include "angle_form.hpp"
+
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "canonical.hpp"
+#include "symbols.hpp"
+
+namespace wavecontact::derive {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+// Factors of a product (a lone non-product counts as one factor), with exponents.
+// Pi is factored as an ordinary symbol.
+std::vector<std::pair<ex, int>> factor_list(const ex& e) {
+  static const GiNaC::symbol pi("pi");
+  std::vector<std::pair<ex, int>> list;
+  const ex factored = GiNaC::factor(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
+  const ex factors = GiNaC::is_a<GiNaC::mul>(factored) ? factored : GiNaC::lst{factored};
+  for (const ex& f : factors) {
+    if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<numeric>(f.op(1))) {
+      list.emplace_back(f.op(0), GiNaC::ex_to<numeric>(f.op(1)).to_int());
+    } else {
+      list.emplace_back(f, 1);
+    }
+  }
+  return list;
+}
+
+numeric value_at_sample(const ex& e) {
+  const ex value = atoms_in_v_variables(e).subs(sample_point_v()).evalf();
+  if (!GiNaC::is_a<numeric>(value)) {
+    std::ostringstream os;
+    os << "angle form: cannot evaluate " << e << " at the sample point";
+    throw std::logic_error(os.str());
+  }
+  return GiNaC::ex_to<numeric>(value);
+}
+
+// The atom that a factor is a rational multiple of, or the factor itself.
+ex as_atom(const ex& f) {
+  const std::pair<ex, ex> atoms[] = {{1 - sym::Ca(), sym::Sa()},
+                                     {1 - sym::Cx(), sym::Sx()},
+                                     {sym::Cx() - sym::Ca(), sym::D()}};
+  for (const auto& [polynomial, atom] : atoms) {
+    const ex ratio = (f / polynomial).normal();
+    if (GiNaC::is_a<numeric>(ratio)) return ratio * atom;
+  }
+  return f;
+}
+
+// The square root of a rational number if it is rational, else 0.
+numeric rational_root(const numeric& q) {
+  if (!q.is_rational() || q.is_negative()) return 0;
+  const numeric root_num = GiNaC::isqrt(q.numer()), root_den = GiNaC::isqrt(q.denom());
+  if (root_num * root_num == q.numer() && root_den * root_den == q.denom()) {
+    return root_num / root_den;
+  }
+  return 0;
+}
+
+}  // namespace
+
+GiNaC::exmap sample_point_v() {
+  // x^ = 0.4, a^ = 1.2 (below pi/2) as exact rationals of their half-angle tangents;
+  // m = 1/2 and unit-ish physical parameters.
+  GiNaC::exmap point;
+  point[sym::s()] = numeric(1, 25);      // u = 1/5
+  point[sym::u()] = numeric(1, 5);
+  point[sym::alpha()] = numeric(7, 10);  // alpha = 0.7 -> a^ ~ 1.22
+  point[sym::m()] = numeric(1, 2);
+  point[sym::E()] = numeric(3, 2);
+  point[sym::H1()] = numeric(2, 3);
+  point[sym::b1()] = numeric(5, 4);
+  return point;
+}
+
+ex atoms_in_v_variables(const ex& e) {
+  const ex s = sym::s(), alpha2 = GiNaC::pow(sym::alpha(), 2);
+  const ex Cx = (1 - s) / (1 + s), Ca = (1 - alpha2) / (1 + alpha2);
+  return e.subs(GiNaC::lst{sym::Sa() == 1 - Ca, sym::Sx() == 1 - Cx, sym::D() == Cx - Ca,
+                           sym::Ca() == Ca, sym::Cx() == Cx});
+}
+
+std::vector<RootTerm> root_terms(const RadicalSum& closed, const Radicals& radicals,
+                                 const ex& prefactor_square) {
+  std::vector<RootTerm> terms;
+  for (const auto& [mask, c] : closed.terms()) {
+    ex radicand = prefactor_square;
+    for (unsigned i = 0; i < radicals.size(); ++i) {
+      if (mask & (RadicalSum::Mask{1} << i)) radicand *= radicals.square(i);
+    }
+    terms.push_back({c, radicand.normal()});
+  }
+  return terms;
+}
+
+namespace {
+
+// A product coefficient * prod factor^exponent with every factor an irreducible
+// polynomial over Q that is positive on the domain (or an atom), keyed by its
+// canonical string: a deterministic factored form.
+struct Product {
+  numeric coefficient = 1;
+  std::map<std::string, std::pair<ex, int>> factors;
+
+  void multiply(const ex& f, int exponent) {
+    if (exponent == 0) return;
+    const ex atom = as_atom(f);
+    ex base = atom;
+    numeric scale = 1;
+    if (GiNaC::is_a<GiNaC::mul>(atom)) {  // c * atom
+      for (const ex& part : atom) {
+        if (GiNaC::is_a<numeric>(part)) scale *= GiNaC::ex_to<numeric>(part);
+      }
+      base = (atom / scale).normal();
+    }
+    base = base.expand();
+    if (value_at_sample(base).is_negative()) {
+      base = (-base).expand();
+      scale = -scale;
+    }
+    coefficient *= GiNaC::ex_to<numeric>(GiNaC::pow(scale, exponent));
+    auto [it, inserted] = factors.emplace(canonical_string(base), std::make_pair(base, exponent));
+    if (!inserted) it->second.second += exponent;
+  }
+
+  // Every factor of the rational function e.
+  void multiply_factored(const ex& e) {
+    const ex nd = e.normal().numer_denom();
+    for (int part = 0; part < 2; ++part) {
+      const int direction = part == 0 ? 1 : -1;
+      for (const auto& [f, power] : factor_list(nd.op(part))) {
+        if (GiNaC::is_a<numeric>(f)) {
+          coefficient *= GiNaC::ex_to<numeric>(GiNaC::pow(f, direction * power));
+        } else {
+          multiply(f, direction * power);
+        }
+      }
+    }
+  }
+
+  ex to_ex() const {
+    ex result = coefficient;
+    for (const auto& [key, factor] : factors) result *= GiNaC::pow(factor.first, factor.second);
+    return result;
+  }
+};
+
+}  // namespace
+
+RootTerm to_angle_atoms(const RootTerm& term) {
+  const ex s = sym::s(), alpha = sym::alpha();
+  const ex Cx = sym::Cx(), Ca = sym::Ca();
+  const GiNaC::lst to_angles{s == (1 - Cx) / (1 + Cx),
+                             alpha == GiNaC::sqrt((1 - Ca) / (1 + Ca))};
+  const ex rational = term.rational.subs(to_angles).normal();
+  const ex radicand = term.radicand.subs(to_angles).normal();
+  if (rational.has(alpha) || radicand.has(alpha) || rational.has(s) || radicand.has(s)) {
+    throw std::logic_error("angle form: substitution incomplete");
+  }
+
+  Product root;
+  root.multiply_factored(radicand);
+  if (!root.coefficient.is_positive()) {
+    std::ostringstream os;
+    os << "angle form: radicand " << radicand << " is not positive on the domain";
+    throw std::logic_error(os.str());
+  }
+  // Pull squares out of the root: sqrt(f^(2q + r)) = f^q sqrt(f^r), f > 0.
+  Product outside, inside;
+  outside.multiply_factored(rational);
+  for (const auto& [key, factor] : root.factors) {
+    const int q = factor.second / 2, r = factor.second % 2;
+    outside.multiply(factor.first, q);
+    inside.multiply(factor.first, r);
+  }
+  const numeric root_of_coefficient = rational_root(root.coefficient);
+  if (root_of_coefficient.is_zero()) {
+    inside.coefficient = root.coefficient;
+  } else {
+    outside.coefficient *= root_of_coefficient;
+  }
+  return {outside.to_ex(), inside.to_ex()};
+}
+
+ex as_ex(const RootTerm& term) {
+  if (term.radicand.is_equal(1)) return term.rational;
+  return term.rational * GiNaC::sqrt(term.radicand);
+}
+
+ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form,
+                       bool& sign_agrees) {
+  const ex angle_rational = atoms_in_v_variables(angle_form.rational);
+  const ex angle_radicand = atoms_in_v_variables(angle_form.radicand);
+  const ex residual = (GiNaC::pow(v_form.rational, 2) * v_form.radicand -
+                       GiNaC::pow(angle_rational, 2) * angle_radicand)
+                          .normal();
+  const ex point_v = v_form.rational.subs(sample_point_v()).evalf();
+  const ex point_angle = angle_rational.subs(sample_point_v()).evalf();
+  sign_agrees = GiNaC::is_a<numeric>(point_v) && GiNaC::is_a<numeric>(point_angle) &&
+                GiNaC::ex_to<numeric>(point_v).is_negative() ==
+                    GiNaC::ex_to<numeric>(point_angle).is_negative();
+  return residual;
+}
+
+}  // namespace wavecontact::derive

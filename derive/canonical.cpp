@@ -1,0 +1,102 @@
+#include "canonical.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace wavecontact::derive {
+
+using GiNaC::ex;
+
+namespace {
+
+std::string plain(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+bool needs_parentheses(const ex& e) {
+  return GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
+         GiNaC::is_a<GiNaC::power>(e) ||
+         (GiNaC::is_a<GiNaC::numeric>(e) &&
+          (GiNaC::ex_to<GiNaC::numeric>(e).is_negative() ||
+           !GiNaC::ex_to<GiNaC::numeric>(e).is_integer()));
+}
+
+std::string wrapped(const ex& e) {
+  const std::string s = canonical_string(e);
+  return needs_parentheses(e) ? "(" + s + ")" : s;
+}
+
+}  // namespace
+
+std::vector<ex> sorted_operands(const ex& e) {
+  std::vector<std::pair<std::string, ex>> keyed;
+  for (const ex& operand : e) keyed.emplace_back(canonical_string(operand), operand);
+  std::stable_sort(keyed.begin(), keyed.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ex> operands;
+  for (auto& [key, operand] : keyed) operands.push_back(operand);
+  return operands;
+}
+
+std::string canonical_string(const ex& e) {
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    std::vector<std::string> terms;
+    for (const ex& term : e) terms.push_back(canonical_string(term));
+    std::sort(terms.begin(), terms.end());
+    std::string s;
+    for (const auto& term : terms) s += (s.empty() || term[0] == '-' ? "" : "+") + term;
+    return s;
+  }
+  if (GiNaC::is_a<GiNaC::mul>(e)) {
+    std::vector<std::string> factors;
+    std::string coefficient;
+    for (const ex& factor : e) {
+      if (GiNaC::is_a<GiNaC::numeric>(factor)) {
+        coefficient = plain(factor);
+      } else {
+        factors.push_back(wrapped(factor));
+      }
+    }
+    std::sort(factors.begin(), factors.end());
+    std::string s = coefficient == "-1" ? "-" : coefficient.empty() ? "" : coefficient + "*";
+    for (std::size_t i = 0; i < factors.size(); ++i) s += (i ? "*" : "") + factors[i];
+    return s;
+  }
+  if (GiNaC::is_a<GiNaC::power>(e)) return wrapped(e.op(0)) + "^" + wrapped(e.op(1));
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    std::string s = GiNaC::ex_to<GiNaC::function>(e).get_name() + "(";
+    for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? "," : "") + canonical_string(e.op(i));
+    return s + ")";
+  }
+  return plain(e);
+}
+
+bool leading_term_negative(const ex& sum) {
+  std::string leading;
+  const ex terms = GiNaC::is_a<GiNaC::add>(sum) ? sum : GiNaC::lst{sum};
+  for (const ex& term : terms) {  // a constant term leads
+    if (GiNaC::is_a<GiNaC::numeric>(term)) return GiNaC::ex_to<GiNaC::numeric>(term).is_negative();
+  }
+  for (const ex& term : terms) {
+    const std::string s = canonical_string(term);
+    const std::string unsigned_s = s[0] == '-' ? s.substr(1) : s;
+    const std::string unsigned_leading = leading[0] == '-' ? leading.substr(1) : leading;
+    if (leading.empty() || unsigned_s < unsigned_leading) leading = s;
+  }
+  return leading[0] == '-';
+}
+
+std::string canonical_rational(const ex& e) {
+  const ex nd = e.normal().numer_denom();
+  ex numerator = nd.op(0).expand(), denominator = nd.op(1).expand();
+  if (leading_term_negative(denominator)) {
+    numerator = (-numerator).expand();
+    denominator = (-denominator).expand();
+  }
+  if (denominator.is_equal(1)) return canonical_string(numerator);
+  return "(" + canonical_string(numerator) + ")/(" + canonical_string(denominator) + ")";
+}
+
+}  // namespace wavecontact::derive

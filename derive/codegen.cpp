@@ -1,0 +1,299 @@
+#include "codegen.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "canonical.hpp"
+
+namespace wavecontact::derive {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+std::string double_literal(const numeric& q) {
+  if (!q.is_rational()) throw std::invalid_argument("double_literal: not rational");
+  const numeric limit = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(2), 53));
+  const numeric p = q.numer(), d = q.denom();
+  if (GiNaC::abs(p) <= limit && d <= limit) {
+    // Both exact in double: the compiler's division is correctly rounded.
+    std::ostringstream os;
+    os << p << ".0";
+    if (d != 1) os << "/" << d << ".0";
+    return d == 1 ? os.str() : "(" + os.str() + ")";
+  }
+  // Otherwise print enough digits to round-trip (q evaluated at 40 digits first).
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.17g", GiNaC::ex_to<numeric>(q.evalf()).to_double());
+  return buffer;
+}
+
+namespace {
+
+enum class Op { Constant, Input, Add, Sub, Mul, Div, Neg, Sqrt };
+
+struct Node {
+  Op op;
+  std::string text;  // Constant literal or Input name
+  int a = -1, b = -1;
+  bool operator<(const Node& o) const {
+    return std::tie(op, text, a, b) < std::tie(o.op, o.text, o.a, o.b);
+  }
+};
+
+class Graph {
+ public:
+  explicit Graph(std::vector<ex> inputs) : inputs_(std::move(inputs)) {}
+
+  int lower(const ex& e) {
+    auto [negative, node] = lower_signed(e);
+    return negative ? make(Op::Neg, node) : node;
+  }
+
+  const std::vector<Node>& nodes() const { return nodes_; }
+
+ private:
+  int intern(Node n) {
+    if ((n.op == Op::Add || n.op == Op::Mul) && n.a > n.b) std::swap(n.a, n.b);
+    auto [it, inserted] = index_.emplace(n, static_cast<int>(nodes_.size()));
+    if (inserted) nodes_.push_back(n);
+    return it->second;
+  }
+  int make(Op op, int a, int b = -1) { return intern({op, "", a, b}); }
+  int constant(const std::string& literal) { return intern({Op::Constant, literal}); }
+
+  // (negative, node) with the value = (negative ? -1 : 1) * node.
+  std::pair<bool, int> lower_signed(const ex& e) {
+    if (GiNaC::is_a<numeric>(e)) {
+      const numeric q = GiNaC::ex_to<numeric>(e);
+      return {q.is_negative(), constant(double_literal(GiNaC::abs(q)))};
+    }
+    if (GiNaC::is_a<GiNaC::constant>(e)) {
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "%.17g",
+                    GiNaC::ex_to<numeric>(e.evalf()).to_double());
+      return {false, constant(buffer)};
+    }
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      const auto& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+      const bool known = std::any_of(inputs_.begin(), inputs_.end(),
+                                     [&](const ex& s) { return s.is_equal(e); });
+      if (!known) throw std::invalid_argument("emit: symbol " + name + " is not an argument");
+      return {false, intern({Op::Input, name})};
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) return {false, lower_sum(e)};
+    if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return lower_product(e);
+    std::ostringstream os;
+    os << "emit: cannot lower " << e;
+    throw std::invalid_argument(os.str());
+  }
+
+  // Sums: Horner form in the input of highest degree if that degree is >= 2.
+  int lower_sum(const ex& sum) {
+    const ex e = sum.expand();
+    if (!GiNaC::is_a<GiNaC::add>(e)) return lower(e);
+    const ex* variable = nullptr;
+    int best = 1;
+    for (const ex& s : inputs_) {
+      if (!e.is_polynomial(s)) continue;
+      const int d = e.degree(s);
+      if (d > best) best = d, variable = &s;
+    }
+    if (variable == nullptr) return lower_terms(e);
+    const ex x = *variable;
+    int acc = lower(e.coeff(x, best));
+    const int xnode = lower(x);
+    for (int k = best - 1; k >= 0; --k) {
+      acc = make(Op::Mul, acc, xnode);
+      const ex c = e.coeff(x, k);
+      if (c.is_zero()) continue;
+      auto [negative, node] = lower_signed(c);
+      acc = negative ? make(Op::Sub, acc, node) : make(Op::Add, acc, node);
+    }
+    return acc;
+  }
+
+  int lower_terms(const ex& e) {
+    std::vector<std::pair<bool, int>> terms;
+    for (const ex& term : sorted_operands(e)) terms.push_back(lower_signed(term));
+    // Start from a positive term when there is one.
+    std::stable_partition(terms.begin(), terms.end(), [](const auto& t) { return !t.first; });
+    int acc = terms.front().first ? make(Op::Neg, terms.front().second) : terms.front().second;
+    for (std::size_t i = 1; i < terms.size(); ++i) {
+      acc = make(terms[i].first ? Op::Sub : Op::Add, acc, terms[i].second);
+    }
+    return acc;
+  }
+
+  // Products and powers: coefficient * numerator / denominator.
+  std::pair<bool, int> lower_product(const ex& e) {
+    numeric coefficient = 1;
+    ex constants = 1;  // pi and other constants, folded into the coefficient's literal
+    bool has_constants = false;
+    std::vector<int> numerator, denominator;
+    const std::vector<ex> factors =
+        GiNaC::is_a<GiNaC::mul>(e) ? sorted_operands(e) : std::vector<ex>{e};
+    for (const ex& f : factors) {
+      if (GiNaC::is_a<numeric>(f)) {
+        coefficient *= GiNaC::ex_to<numeric>(f);
+        continue;
+      }
+      if (GiNaC::is_a<GiNaC::constant>(f) ||
+          (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::constant>(f.op(0)))) {
+        constants *= f;
+        has_constants = true;
+        continue;
+      }
+      ex base = f;
+      numeric exponent = 1;
+      if (GiNaC::is_a<GiNaC::power>(f)) {
+        if (!GiNaC::is_a<numeric>(f.op(1))) throw std::invalid_argument("emit: symbolic exponent");
+        base = f.op(0);
+        exponent = GiNaC::ex_to<numeric>(f.op(1));
+      }
+      if (GiNaC::is_a<GiNaC::add>(base) && exponent.is_integer() &&
+          leading_term_negative(base.expand())) {
+        // GiNaC may store a factor as -(sum) in one run and (-sum) in the next.
+        base = (-base).expand();
+        if (exponent.is_odd()) coefficient = -coefficient;
+      }
+      const int node = power(base, GiNaC::abs(exponent));
+      (exponent.is_negative() ? denominator : numerator).push_back(node);
+    }
+    const bool negative = coefficient.is_negative();  // constants are positive (pi)
+    int result = -1;
+    auto multiply_into = [&](int& acc, int node) { acc = acc < 0 ? node : make(Op::Mul, acc, node); };
+    if (has_constants) {
+      // One literal for coefficient * pi...: a single rounding.
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "%.17g",
+                    GiNaC::abs(GiNaC::ex_to<numeric>((coefficient * constants).evalf())).to_double());
+      result = constant(buffer);
+    } else if (!GiNaC::abs(coefficient).is_equal(1)) {
+      result = constant(double_literal(GiNaC::abs(coefficient)));
+    }
+    for (int node : numerator) multiply_into(result, node);
+    int below = -1;
+    for (int node : denominator) multiply_into(below, node);
+    if (result < 0) result = constant("1.0");
+    if (below >= 0) result = make(Op::Div, result, below);
+    return {negative, result};
+  }
+
+  // base^exponent for exponent a positive integer or half-integer.
+  int power(const ex& base, const numeric& exponent) {
+    const int b = lower(base);
+    if (exponent.is_integer()) return integer_power(b, exponent.to_int());
+    if ((2 * exponent).is_integer()) {
+      const int root = make(Op::Sqrt, b);
+      const int whole = (exponent - numeric(1, 2)).to_int();
+      return whole == 0 ? root : make(Op::Mul, integer_power(b, whole), root);
+    }
+    throw std::invalid_argument("emit: exponent is not an integer or half-integer");
+  }
+
+  int integer_power(int b, int n) {
+    if (n == 1) return b;
+    const int half = integer_power(b, n / 2);
+    const int square = make(Op::Mul, half, half);
+    return n % 2 == 0 ? square : make(Op::Mul, square, b);
+  }
+
+  std::vector<ex> inputs_;
+  std::vector<Node> nodes_;
+  std::map<Node, int> index_;
+};
+
+class Printer {
+ public:
+  Printer(const std::vector<Node>& nodes, int root) : nodes_(nodes), uses_(nodes.size(), 0) {
+    count(root);
+  }
+
+  std::string body(int root, OpCounts& counts) {
+    std::ostringstream os;
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
+      if (uses_[i] == 0) continue;
+      tally(nodes_[i].op, counts);
+      if (uses_[i] >= 2 && i != root && !leaf(i)) {
+        const std::string value = expression(i, true);
+        names_[i] = "_tmp" + std::to_string(counts.temporaries++);
+        os << "  const Scalar " << names_[i] << " = " << value << ";\n";
+      }
+    }
+    os << "  return " << expression(root, true) << ";\n";
+    return os.str();
+  }
+
+ private:
+  bool leaf(int i) const { return nodes_[i].op == Op::Constant || nodes_[i].op == Op::Input; }
+
+  void count(int i) {
+    if (uses_[i]++ > 0) return;
+    if (nodes_[i].a >= 0) count(nodes_[i].a);
+    if (nodes_[i].b >= 0) count(nodes_[i].b);
+  }
+
+  static void tally(Op op, OpCounts& c) {
+    switch (op) {
+      case Op::Add: case Op::Sub: ++c.additions; break;
+      case Op::Mul: ++c.multiplications; break;
+      case Op::Div: ++c.divisions; break;
+      case Op::Sqrt: ++c.square_roots; break;
+      case Op::Neg: ++c.negations; break;
+      default: break;
+    }
+  }
+
+  std::string expression(int i, bool top = false) {
+    if (auto it = names_.find(i); it != names_.end()) return it->second;
+    const Node& n = nodes_[i];
+    std::string s;
+    switch (n.op) {
+      case Op::Constant: return "Scalar(" + n.text + ")";
+      case Op::Input: return n.text;
+      case Op::Add: s = expression(n.a) + " + " + expression(n.b); break;
+      case Op::Sub: s = expression(n.a) + " - " + expression(n.b); break;
+      case Op::Mul: s = expression(n.a) + " * " + expression(n.b); break;
+      case Op::Div: s = expression(n.a) + " / " + expression(n.b); break;
+      case Op::Neg: return "-" + expression(n.a);
+      case Op::Sqrt: return "sqrt(" + expression(n.a, true) + ")";
+    }
+    return top ? s : "(" + s + ")";
+  }
+
+  const std::vector<Node>& nodes_;
+  std::vector<int> uses_;
+  std::map<int, std::string> names_;
+};
+
+}  // namespace
+
+std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
+  Graph graph(f.arguments);
+  const int root = graph.lower(f.value);
+  OpCounts counts;
+  Printer printer(graph.nodes(), root);
+  const std::string body = printer.body(root, counts);
+
+  std::ostringstream os;
+  std::istringstream doc(f.doc);
+  for (std::string line; std::getline(doc, line);) os << "// " << line << "\n";
+  os << "// Total ops: " << counts.total() << " (" << counts.additions << " add, "
+     << counts.multiplications << " mul, " << counts.divisions << " div, "
+     << counts.square_roots << " sqrt, " << counts.negations << " neg), "
+     << counts.temporaries << " temporaries\n";
+  os << "template <typename Scalar>\ninline Scalar " << f.name << "(";
+  for (std::size_t i = 0; i < f.arguments.size(); ++i) {
+    const std::string& name = GiNaC::ex_to<GiNaC::symbol>(f.arguments[i]).get_name();
+    os << (i ? ", " : "") << "const Scalar& " << (f.value.has(f.arguments[i]) ? name : "/*" + name + "*/");
+  }
+  os << ") {\n  using std::sqrt;\n" << body << "}\n";
+  if (out_counts) *out_counts = counts;
+  return os.str();
+}
+
+}  // namespace wavecontact::derive

@@ -1,0 +1,38 @@
+// The C++ emitter. GiNaC has no common-subexpression elimination (print_csrc repeats
+// subexpressions and prints sqrt as pow(x, 0.5)), so expressions are lowered to a
+// hash-consed graph: identical subexpressions become one node, nodes used twice
+// become `const Scalar _tmpN` temporaries. Integer powers become products (by
+// squaring), q^(k/2) becomes q^((k-1)/2) * sqrt(q), polynomials of degree >= 2 are
+// evaluated in Horner form, and rational constants become exact double literals.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace wavecontact::derive {
+
+struct OpCounts {
+  int additions = 0, multiplications = 0, divisions = 0, square_roots = 0, negations = 0;
+  int temporaries = 0;
+  int total() const {
+    return additions + multiplications + divisions + square_roots + negations;
+  }
+};
+
+// One emitted evaluator: `template <typename Scalar> Scalar name(const Scalar& arg...)`.
+struct EmittedFunction {
+  std::string name;
+  std::string doc;                          // comment lines above the function
+  std::vector<GiNaC::ex> arguments;  // symbols; parameter names are their names
+  GiNaC::ex value;
+};
+
+// The C++ source of one function, with its op counts in a comment.
+std::string emit_function(const EmittedFunction& function, OpCounts* counts = nullptr);
+
+// A literal that denotes exactly the double nearest to the rational q.
+std::string double_literal(const GiNaC::numeric& q);
+
+}  // namespace wavecontact::derive
