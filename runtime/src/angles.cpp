@@ -1,0 +1,47 @@
+#include "wavecontact/angles.hpp"
+
+#include <cmath>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/cos_pi.hpp>
+#include <boost/math/special_functions/sin_pi.hpp>
+
+namespace wavecontact {
+
+namespace {
+
+using boost::math::cos_pi;
+using boost::math::sin_pi;
+constexpr double pi = boost::math::double_constants::pi;
+
+// cos(pi q) and 1 - cos(pi q) for q = y/b1 carried as r + e (r = fl(y/b1), e the
+// rounding error from an fma): first-order correction in e, so that 1 + m cos(pi q)
+// stays accurate to a few ulp even for m ~ 1e4 near q = 1/2, where a rounded q alone
+// would lose log10(m) digits.
+struct CosinePair {
+  double c, one_minus_c;
+};
+
+CosinePair cosine_pair(double y, double b1) {
+  const double r = y / b1;
+  const double e = std::fma(-r, b1, y) / b1;
+  const double half = sin_pi(r / 2);
+  const double slope = pi * sin_pi(r) * e;  // d cos(pi q)/dq = -pi sin(pi q)
+  return {cos_pi(r) - slope, 2 * half * half + slope};
+}
+
+}  // namespace
+
+ZoneAngles zone_angles(double a, double b1) {
+  const CosinePair za = cosine_pair(a, b1);
+  return {za.c, za.one_minus_c};
+}
+
+PointAngles point_angles(double x, double a, double b1) {
+  const CosinePair zx = cosine_pair(x, b1);
+  // cos x^ - cos a^ = 2 sin((a^ + x^)/2) sin((a^ - x^)/2); a - x is exact for x near a.
+  const double D = 2 * sin_pi((a + x) / (2 * b1)) * sin_pi((a - x) / (2 * b1));
+  return {zx.c, zx.one_minus_c, D};
+}
+
+}  // namespace wavecontact
