@@ -1,0 +1,173 @@
+// The command-line contract of `wavecontact` (issue: core pipeline, section 4).
+#define BOOST_TEST_MODULE cli
+#include <boost/test/unit_test.hpp>
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+namespace tt = boost::test_tools;
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+Result run(const std::string& arguments) {
+  static int counter = 0;
+  const fs::path dir = fs::temp_directory_path() / ("wavecontact_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path out = dir / ("out" + std::to_string(counter)), err = dir / ("err" + std::to_string(counter));
+  ++counter;
+  const std::string command = std::string(WAVECONTACT_CLI) + " " + arguments + " > '" +
+                              out.string() + "' 2> '" + err.string() + "'";
+  const int raw = std::system(command.c_str());
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+std::vector<double> fields(const std::string& line) {
+  std::vector<double> values;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) values.push_back(std::stod(field));
+  return values;
+}
+
+std::string number(double value) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+const std::string b1 = number(M_PI);
+const std::string profile = "--H1 1 --b1 " + b1 + " --E 1";
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(pressure_prints_check_values) {
+  const Result r = run("pressure " + profile + " --m 2 --a " + number(0.45 * M_PI) + " --x 0," +
+                       number(0.1));
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto rows = lines(r.out);
+  BOOST_TEST_REQUIRE(rows.size() == 3u);
+  BOOST_TEST(rows[0] == "x,p,p_waviness,p_roughness");
+  const auto first = fields(rows[1]);
+  BOOST_TEST(first.at(1) == 0.5375117929804417, tt::tolerance(1e-13));
+  BOOST_TEST(first.at(2) == first.at(1));
+  BOOST_TEST(first.at(3) == 0.0);
+  // 17 significant digits.
+  BOOST_TEST(rows[1].substr(rows[1].find(',') + 1, 19) == "0.53751179298044172");
+
+  const Result paper = run("pressure " + profile + " --m 10 --a " + number(0.45 * M_PI) +
+                           " --x 0 --form paper");
+  BOOST_TEST_REQUIRE(paper.status == 0, paper.err);
+  BOOST_TEST(fields(lines(paper.out).at(1)).at(1) == 0.2532608275678914, tt::tolerance(1e-13));
+
+  const Result by_load = run("pressure " + profile + " --m 5 --P 0.6548011577944177 --x " +
+                             number(0.1 * M_PI));
+  BOOST_TEST_REQUIRE(by_load.status == 0, by_load.err);
+  BOOST_TEST(fields(lines(by_load.out).at(1)).at(1) == 0.2569750078646253, tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(load_and_solve_print_one_row) {
+  const Result r = run("load " + profile + " --m 0.2 --a " + number(0.3 * M_PI));
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto rows = lines(r.out);
+  BOOST_TEST_REQUIRE(rows.size() == 2u);
+  BOOST_TEST(rows[0] == "a,P,P_waviness,P_roughness,pa,pa_over_pstar,contact_fraction");
+  const auto v = fields(rows[1]);
+  BOOST_TEST(v.at(1) == 0.6003844994822082, tt::tolerance(1e-13));
+  BOOST_TEST(v.at(4) == v.at(1) / (2 * M_PI), tt::tolerance(1e-15));
+  BOOST_TEST(v.at(5) == v.at(1) / M_PI, tt::tolerance(1e-15));
+  BOOST_TEST(v.at(6) == 0.3, tt::tolerance(1e-15));
+
+  const Result s = run("solve " + profile + " --m 10 --P 1.070213575867781");
+  BOOST_TEST_REQUIRE(s.status == 0, s.err);
+  BOOST_TEST(lines(s.out).at(0) == "P,a,contact_fraction");
+  BOOST_TEST(fields(lines(s.out).at(1)).at(1) == 0.45 * M_PI, tt::tolerance(1e-13));
+
+  const Result ratio = run("solve " + profile + " --m 0 --pa-over-pstar 0.25");
+  BOOST_TEST_REQUIRE(ratio.status == 0, ratio.err);
+  BOOST_TEST(fields(lines(ratio.out).at(1)).at(2) == 1.0 / 3.0, tt::tolerance(1e-14));  // sin^2(pi/6)
+}
+
+BOOST_AUTO_TEST_CASE(material_constants_replace_E) {
+  const double E = 1 / ((1 - 0.09) / 2.0 + (1 - 0.16) / 3.0);
+  const Result a = run("load --H1 1 --b1 2 --m 1 --a 0.5 --E " + number(E));
+  const Result b = run("load --H1 1 --b1 2 --m 1 --a 0.5 --E1 2 --nu1 0.3 --E2 3 --nu2 0.4");
+  BOOST_TEST_REQUIRE(a.status == 0);
+  BOOST_TEST_REQUIRE(b.status == 0, b.err);
+  BOOST_TEST(fields(lines(a.out).at(1)).at(1) == fields(lines(b.out).at(1)).at(1), tt::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(curve_has_a_row_per_point) {
+  const Result r = run("curve --H1 1 --b1 10 --m 2 --E 1 --points 7");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto rows = lines(r.out);
+  BOOST_TEST(rows.size() == 8u);
+  BOOST_TEST(rows[0] == "a,contact_fraction,pa_over_pstar,p0,p0_paper");
+  BOOST_TEST(fields(rows.back()).at(1) == 0.5);
+}
+
+BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_with_one_line_and_no_output) {
+  const std::vector<std::string> bad{
+      "pressure " + profile + " --m 2 --a 9 --x 0",              // a > b1/2
+      "pressure " + profile + " --m -1 --a 1 --x 0",             // m < 0
+      "pressure " + profile + " --m 2 --x 0",                    // no zone
+      "pressure " + profile + " --m 2 --a 1 --P 1 --x 0",        // two zones
+      "pressure --H1 1 --b1 3 --m 2 --a 1 --x 0",                // no modulus
+      "pressure " + profile + " --m 2 --a 1 --x zero",           // not a number
+      "pressure " + profile + " --m 2 --a 1 --x 0 --form fancy", // bad form
+      "load " + profile + " --m 2 --a 1 --a 1.2",                // repeated option
+      "load " + profile + " --m 2 --a 1 --colour red",           // unknown option
+      "load --H1 0 --b1 3 --E 1 --m 2 --a 1",                    // H1 = 0
+      "load --H1 1 --b1 3 --E 1 --m 2 --a nan",                  // not finite
+      "solve " + profile + " --m 2 --P 1e9",                     // beyond the closed form
+      "load --H1 1 --b1 3 --m 1 --a 1 --E1 2 --nu1 0.7 --E2 3 --nu2 0.3",  // nu1 > 0.5
+      "frobnicate",                                              // unknown subcommand
+  };
+  for (const auto& arguments : bad) {
+    const Result r = run(arguments);
+    BOOST_TEST(r.status == 2, arguments << " -> " << r.status << ": " << r.err);
+    BOOST_TEST(r.out.empty(), arguments << " printed " << r.out);
+    BOOST_TEST(lines(r.err).size() == 1u, arguments << " -> " << r.err);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
+  const fs::path out = fs::temp_directory_path() / ("wavecontact_reproduce_" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const Result r = run("reproduce --out '" + out.string() + "'");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  for (const char* figure : {"fig1", "fig5", "fig6"}) {
+    for (const char* extension : {".csv", ".png"}) {
+      const fs::path file = out / (std::string(figure) + extension);
+      BOOST_TEST(fs::exists(file), file);
+      BOOST_TEST((fs::exists(file) && fs::file_size(file) > 100), file);
+    }
+  }
+  fs::remove_all(out);
+}
