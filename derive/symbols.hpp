@@ -20,6 +20,7 @@ const GiNaC::realsymbol& E();   // reduced modulus E* (eq. 7)
 const GiNaC::realsymbol& H1();  // waviness height (eq. 2)
 const GiNaC::realsymbol& b1();  // waviness half-period (eq. 2)
 const GiNaC::realsymbol& m();   // shape parameter of the parametric wave curve (eq. 2)
+const GiNaC::realsymbol& H2();  // roughness height (eq. 3)
 
 // Angle atoms of the well-conditioned (eq. 14) form; the runtime computes them
 // without cancellation (runtime/include/wavecontact/angles.hpp).
