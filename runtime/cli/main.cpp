@@ -11,15 +11,25 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+
 #include "reproduce.hpp"
+#include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace {
 
 using wavecontact::Form;
+using wavecontact::TwoScaleContact;
+using wavecontact::TwoScaleParams;
 using wavecontact::WavinessParams;
 
 struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// The single-zone solution has a negative total pressure: not a valid result.
+struct InadmissibleError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
@@ -32,7 +42,8 @@ std::string number(double value) {
 // Options shared by the subcommands: the profile, the material, the form.
 struct ProfileOptions {
   double H1 = 0, b1 = 0, m = 0;
-  std::optional<double> E, E1, nu1, E2, nu2;
+  std::optional<double> E, E1, nu1, E2, nu2, H2;
+  std::optional<int> n;
   std::string form = "exact";
 
   void add_to(CLI::App* app, bool with_form) {
@@ -45,6 +56,10 @@ struct ProfileOptions {
     auto* e2 = app->add_option("--E2", E2, "Young's modulus of body 2");
     auto* n2 = app->add_option("--nu2", nu2, "Poisson ratio of body 2");
     for (auto* o : {e1, n1, e2, n2}) e->excludes(o);
+    auto* h2 = app->add_option("--H2", H2, "height of the roughness harmonic H2 [length] (with --n)");
+    auto* ratio = app->add_option("--n", n, "wavelength ratio n = b1/b2, even (with --H2)");
+    h2->needs(ratio);
+    ratio->needs(h2);
     if (with_form) {
       app->add_option("--form", form, "exact (derived) or paper (printed eq. 13/14)")
           ->check(CLI::IsMember({"exact", "paper"}));
@@ -66,7 +81,31 @@ struct ProfileOptions {
   }
 
   Form selected_form() const { return form == "paper" ? Form::paper : Form::exact; }
+
+  // The two-scale profile (eq. 1), H2 = 0 when no roughness is given.
+  TwoScaleParams two_scale() const { return {params(), {H2.value_or(0.0), n.value_or(2)}}; }
+  bool has_roughness() const { return H2.has_value(); }
 };
+
+// The zone for a: refuses it, naming x and p, if the total pressure goes negative.
+TwoScaleContact admissible_contact(const TwoScaleParams& params, double a, Form form) {
+  TwoScaleContact contact(params, a, form);
+  if (!contact.admissible()) {
+    throw InadmissibleError(
+        "no single-zone solution at a = " + number(a) + ": the total pressure is p = " +
+        number(contact.most_negative_pressure()) + " < 0 at x = " +
+        number(contact.most_negative_x()) + " (the contact would separate)");
+  }
+  return contact;
+}
+
+// Every a carrying the load P (one for the waviness alone; possibly several with roughness).
+std::vector<double> half_widths_for_load(const ProfileOptions& profile, double P) {
+  if (!profile.has_roughness()) return {wavecontact::contact_half_width(profile.params(), P)};
+  const std::vector<double> roots = wavecontact::two_scale_half_widths(profile.two_scale(), P);
+  if (roots.empty()) throw UsageError("no contact half-width a <= b1/2 carries P = " + number(P));
+  return roots;
+}
 
 // Exactly one of --a, --P, --pa-over-pstar fixes the contact half-width.
 struct ZoneOptions {
@@ -78,47 +117,62 @@ struct ZoneOptions {
     app->add_option("--pa-over-pstar", ratio, "dimensionless mean pressure pa/p*");
   }
 
-  double half_width(const WavinessParams& p) const {
+  // Every half-width matching the options, in increasing order.
+  std::vector<double> half_widths(const ProfileOptions& profile) const {
     const int given = (a ? 1 : 0) + (P ? 1 : 0) + (ratio ? 1 : 0);
     if (given != 1) throw UsageError("give exactly one of --a, --P, --pa-over-pstar");
-    if (a) return *a;
-    if (P) return wavecontact::contact_half_width(p, *P);
-    return wavecontact::contact_half_width_for_pa_over_pstar(p, *ratio);
+    if (a) return {*a};
+    const WavinessParams p = profile.params();
+    const double load = P ? *P : *ratio * M_PI * p.E * p.H1;  // pa/p* = P/(pi E* H1)
+    return half_widths_for_load(profile, load);
+  }
+
+  double half_width(const ProfileOptions& profile) const {
+    const std::vector<double> roots = half_widths(profile);
+    if (roots.size() > 1) {
+      std::string list;
+      for (double r : roots) list += (list.empty() ? "" : ", ") + number(r);
+      throw UsageError("the load is carried by several half-widths a = " + list + "; give --a");
+    }
+    return roots.front();
   }
 };
 
-std::string pressure_table(const WavinessParams& p, double a, const std::vector<double>& xs,
+std::string pressure_table(const TwoScaleParams& p, double a, const std::vector<double>& xs,
                            Form form) {
+  const TwoScaleContact contact = admissible_contact(p, a, form);
   std::ostringstream os;
   os << "x,p,p_waviness,p_roughness\n";
   for (double x : xs) {
-    const double pw = wavecontact::pressure(p, a, x, form);
-    os << number(x) << "," << number(pw) << "," << number(pw) << "," << number(0.0) << "\n";
+    const double pw = contact.waviness_pressure(x), pr = contact.roughness_pressure(x);
+    os << number(x) << "," << number(contact.pressure(x)) << "," << number(pw) << ","
+       << number(pr) << "\n";
   }
   return os.str();
 }
 
-std::string load_table(const WavinessParams& p, double a) {
-  const double P = wavecontact::load(p, a);
-  std::ostringstream os;
-  os << "a,P,P_waviness,P_roughness,pa,pa_over_pstar,contact_fraction\n"
-     << number(a) << "," << number(P) << "," << number(P) << "," << number(0.0) << ","
-     << number(wavecontact::mean_pressure(p, a)) << ","
-     << number(wavecontact::pa_over_pstar(p, a)) << ","
-     << number(wavecontact::contact_fraction(p, a)) << "\n";
-  return os.str();
+std::string load_row(const TwoScaleParams& p, double a, Form form) {
+  const TwoScaleContact contact = admissible_contact(p, a, form);
+  const WavinessParams& w = p.waviness;
+  const double P = contact.load();
+  return number(a) + "," + number(P) + "," + number(contact.waviness_load()) + "," +
+         number(contact.roughness_load()) + "," + number(P / (2 * w.b1)) + "," +
+         number(P / (M_PI * w.E * w.H1)) + "," + number(wavecontact::contact_fraction(w, a)) +
+         "\n";
 }
 
-std::string curve_table(const WavinessParams& p, int points) {
+std::string curve_table(const TwoScaleParams& p, int points) {
   if (points < 1) throw UsageError("--points must be >= 1");
   std::ostringstream os;
   os << "a,contact_fraction,pa_over_pstar,p0,p0_paper\n";
+  const WavinessParams& w = p.waviness;
   for (int k = 1; k <= points; ++k) {
-    const double a = p.b1 / 2 * k / points;
-    os << number(a) << "," << number(wavecontact::contact_fraction(p, a)) << ","
-       << number(wavecontact::pa_over_pstar(p, a)) << ","
-       << number(wavecontact::pressure(p, a, 0.0, Form::exact)) << ","
-       << number(wavecontact::pressure(p, a, 0.0, Form::paper)) << "\n";
+    const double a = w.b1 / 2 * k / points;
+    const TwoScaleContact exact(p, a, Form::exact), paper(p, a, Form::paper);
+    os << number(a) << "," << number(wavecontact::contact_fraction(w, a)) << ","
+       << number(exact.load() / (M_PI * w.E * w.H1)) << ","
+       << number(exact.waviness_pressure(0) + exact.roughness_pressure(0)) << ","
+       << number(paper.waviness_pressure(0) + paper.roughness_pressure(0)) << "\n";
   }
   return os.str();
 }
@@ -163,21 +217,41 @@ int main(int argc, char** argv) {
   auto* reproduce = app.add_subcommand("reproduce", "CSV and PNG of the seed paper's figures");
   reproduce->add_option("--out", out_dir, "output directory")->required();
 
+  auto* kcoef = app.add_subcommand("kcoef", "the exact coefficients k_j of eq. 18");
+  int kcoef_n = 0;
+  kcoef->add_option("--n", kcoef_n, "wavelength ratio n, even >= 2")->required();
+
   try {
     app.parse(argc, argv);
     std::string output;
     if (*pressure) {
-      const WavinessParams p = profile.params();
-      output = pressure_table(p, zone.half_width(p), xs, profile.selected_form());
+      output = pressure_table(profile.two_scale(), zone.half_width(profile), xs,
+                              profile.selected_form());
     } else if (*load) {
-      output = load_table(load_profile.params(), *load_a);
+      output = "a,P,P_waviness,P_roughness,pa,pa_over_pstar,contact_fraction\n" +
+               load_row(load_profile.two_scale(), *load_a, load_profile.selected_form());
     } else if (*solve) {
-      const WavinessParams p = solve_profile.params();
-      const double a = solve_zone.half_width(p);
-      output = "P,a,contact_fraction\n" + number(wavecontact::load(p, a)) + "," + number(a) +
-               "," + number(wavecontact::contact_fraction(p, a)) + "\n";
+      // One row per admissible half-width carrying the load (several are possible with
+      // roughness); an error naming the first refusal if none is admissible.
+      const TwoScaleParams p = solve_profile.two_scale();
+      std::string rows, first_refusal;
+      for (double a : solve_zone.half_widths(solve_profile)) {
+        try {
+          const TwoScaleContact contact = admissible_contact(p, a, Form::exact);
+          rows += number(contact.load()) + "," + number(a) + "," +
+                  number(wavecontact::contact_fraction(p.waviness, a)) + "\n";
+        } catch (const InadmissibleError& e) {
+          if (first_refusal.empty()) first_refusal = e.what();
+        }
+      }
+      if (rows.empty()) throw InadmissibleError(first_refusal);
+      output = "P,a,contact_fraction\n" + rows;
     } else if (*curve) {
-      output = curve_table(curve_profile.params(), points);
+      output = curve_table(curve_profile.two_scale(), points);
+    } else if (*kcoef) {
+      const auto k = wavecontact::expansion_coefficients(kcoef_n);
+      output = "j,k\n";
+      for (std::size_t j = 0; j < k.size(); ++j) output += std::to_string(j + 1) + "," + k[j] + "\n";
     } else if (*reproduce) {
       wavecontact::cli::reproduce(out_dir, std::cerr);
     }
@@ -196,6 +270,9 @@ int main(int argc, char** argv) {
   } catch (const std::domain_error& e) {
     std::cerr << "wavecontact: " << e.what() << "\n";
     return 2;
+  } catch (const InadmissibleError& e) {
+    std::cerr << "wavecontact: " << e.what() << "\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "wavecontact: error: " << e.what() << "\n";
     return 1;

@@ -44,4 +44,6 @@ PointAngles point_angles(double x, double a, double b1) {
   return {zx.c, zx.one_minus_c, D};
 }
 
+double reduce_to_period(double x, double b1) { return x - 2 * b1 * std::round(x / (2 * b1)); }
+
 }  // namespace wavecontact

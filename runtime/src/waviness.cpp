@@ -26,12 +26,9 @@ void require_half_width(const char* function, const WavinessParams& p, double a)
   }
 }
 
-// x reduced to the period [-b1, b1] around the asperity's top.
-double reduced(double x, double b1) { return x - 2 * b1 * std::round(x / (2 * b1)); }
-
 double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x,
                    Form form) {
-  const double r = std::fabs(reduced(x, p.b1));
+  const double r = std::fabs(reduce_to_period(x, p.b1));
   if (r >= a) return 0;
   const PointAngles point = point_angles(r, a, p.b1);
   return form == Form::exact

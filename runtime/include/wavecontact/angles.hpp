@@ -22,4 +22,7 @@ ZoneAngles zone_angles(double a, double b1);
 // For a point 0 <= x <= a of the zone.
 PointAngles point_angles(double x, double a, double b1);
 
+// x reduced to the period [-b1, b1] centred on an asperity's top.
+double reduce_to_period(double x, double b1);
+
 }  // namespace wavecontact

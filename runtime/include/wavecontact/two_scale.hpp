@@ -1,0 +1,77 @@
+// The two-scale profile (eq. 1): the parametric wave curve plus the roughness harmonic
+// r(x) = H2 cos(n pi x/b1), n even (eq. 3), one contact zone |x| <= a <= b1/2 per period,
+// superposed (eq. 21).
+//
+// The roughness pressure is the exact solution of eq. 17 in its Legendre-Dirichlet form
+// (derived and proven against the engine in derive/roughness.*):
+//   p_r(x) = (pi/b1) (E* H2 n/sqrt2) sqrt(cos x^ - cos a^) sum_{j<n} P_{n-1-j}(cos a^) cos((j+1/2) x^),
+//   P_r    = (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)],
+// a sum of n terms bounded by 1, evaluated by Clenshaw's recurrence: accurate in double
+// precision for any even n. The seed's eq. 19/20 (Form::paper) is evaluated exactly too,
+// through sum_j k_j z^j = cos(t) sin(2 n t)/(n sin t), cos^2(t) = z.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "wavecontact/parameters.hpp"
+
+namespace wavecontact {
+
+struct RoughnessParams {
+  double H2;  // height of the roughness harmonic [length], >= 0
+  int n;      // wavelength ratio b1/b2, even, >= 2
+};
+
+struct TwoScaleParams {
+  WavinessParams waviness;
+  RoughnessParams roughness;
+};
+
+// The k_j of eq. 18, j = 1..n, exactly: k_j = (-1)^(n-j) C(n-1+j, n-j) 2^(2j-1)/n, printed
+// as integers (or p/q). Any even n >= 2.
+std::vector<std::string> expansion_coefficients(int n);
+
+// One contact zone of half-width a, 0 < a <= b1/2. Construction costs O(n) for the
+// Legendre values and O(n^2) for the admissibility scan; each pressure costs O(n).
+class TwoScaleContact {
+ public:
+  TwoScaleContact(const TwoScaleParams& params, double a, Form form = Form::exact);
+
+  double waviness_pressure(double x) const;
+  double roughness_pressure(double x) const;
+  // p_waviness + p_roughness; throws std::domain_error if the zone is not admissible.
+  double pressure(double x) const;
+
+  double waviness_load() const { return waviness_load_; }
+  double roughness_load() const { return roughness_load_; }
+  double load() const { return waviness_load_ + roughness_load_; }
+
+  // The single-zone solution is physical only if p >= 0 in the whole zone. Checked on
+  // 16 n + 64 evenly spaced points and 10 points approaching the edge.
+  bool admissible() const { return admissible_; }
+  double most_negative_x() const { return most_negative_x_; }
+  double most_negative_pressure() const { return most_negative_pressure_; }
+
+  double half_width() const { return a_; }
+
+ private:
+  double roughness_sum(double Cx, double Sx) const;  // sum_j P_{n-1-j}(Ca) V_j(Cx)
+
+  TwoScaleParams params_;
+  double a_;
+  Form form_;
+  std::vector<double> legendre_;  // P_0..P_n at cos a^
+  double waviness_load_ = 0, roughness_load_ = 0;
+  bool admissible_ = true;
+  double most_negative_x_ = 0, most_negative_pressure_ = 0;
+};
+
+// Every half-width a in (0, b1/2] at which the two-scale load (exact form) equals P, in
+// increasing order (the load need not be monotone when H2 n is large). Found by
+// bracketing on 8 n + 64 intervals and TOMS 748 in each.
+std::vector<double> two_scale_half_widths(const TwoScaleParams& params, double P);
+
+void validate(const RoughnessParams& params, const char* function);
+
+}  // namespace wavecontact
