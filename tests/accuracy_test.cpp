@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <functional>
 #include <iomanip>
@@ -14,6 +15,7 @@
 
 #include "high_precision.hpp"
 #include "waviness.hpp"
+#include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
 using wavecontact::test::PhysicalPoint;
@@ -128,4 +130,64 @@ BOOST_AUTO_TEST_CASE(inverse_of_load_round_trips) {
   // a(P) is ill-conditioned where P(a) is flat (large m near a = b1/2 it is steep instead):
   // the round trip is held to 1e-12 relative.
   BOOST_TEST(report.max * 2.220446049250313e-16 <= 1e-12, report.summary());
+}
+
+namespace {
+
+// The exact roughness pressure at 40 digits (CLN), from the Legendre-Dirichlet form that
+// derive/ proves equal to the engine's closed form:
+// (pi/b1) (E H2 n/sqrt2) sqrt(cos x^ - cos a^) sum_j P_{n-1-j}(cos a^) cos((j+1/2) x^).
+GiNaC::numeric roughness_reference(int n, double E, double H2, double b1, double a, double x) {
+  using GiNaC::numeric;
+  using wavecontact::test::exact;
+  const numeric b = exact(b1);
+  const numeric ahat = GiNaC::ex_to<numeric>((GiNaC::Pi * exact(a) / b).evalf());
+  const numeric xhat = GiNaC::ex_to<numeric>((GiNaC::Pi * exact(x) / b).evalf());
+  const numeric ca = GiNaC::cos(ahat);
+  std::vector<numeric> P{1, ca};
+  for (int k = 1; k < n; ++k) P.push_back(((2 * k + 1) * ca * P[k] - k * P[k - 1]) / (k + 1));
+  numeric sum = 0;
+  for (int j = 0; j < n; ++j) sum += P[n - 1 - j] * GiNaC::cos((j + numeric(1, 2)) * xhat);
+  const numeric scale = GiNaC::ex_to<numeric>((GiNaC::Pi / b * exact(E) * exact(H2) * n / GiNaC::sqrt(numeric(2))).evalf());
+  return scale * GiNaC::sqrt(GiNaC::cos(xhat) - ca) * sum;
+}
+
+double parse_rational(const std::string& k) {
+  const auto slash = k.find('/');
+  return slash == std::string::npos ? std::stod(k)
+                                    : std::stod(k.substr(0, slash)) / std::stod(k.substr(slash + 1));
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(roughness_within_1e12_of_scale) {
+  wavecontact::test::Precision precision(wavecontact::test::reference_digits);
+  for (int n : {2, 8, 16, 32, 64, 128, 256}) {
+    const double E = 1.5, H2 = 0.02, b1 = 3.0;
+    const double scale = E * H2 * n * M_PI / b1;
+    double worst = 0, naive_worst = 0;
+    for (double fa : {0.2 / n, 1.0 / n, 0.05, 0.2, 0.35, 0.5}) {
+      const double a = fa * b1;
+      const wavecontact::TwoScaleContact contact({{1.0, b1, 0.0, E}, {H2, n}}, a);
+      for (double fx : {0.0, 0.1, 0.33, 0.6, 0.9, 0.999, 1 - 1e-9}) {
+        const double x = fx * a;
+        const double computed = contact.roughness_pressure(x);
+        const GiNaC::numeric reference = roughness_reference(n, E, H2, b1, a, x);
+        worst = std::max(worst, std::abs((wavecontact::test::exact(computed) - reference).to_double()) / scale);
+      }
+    }
+    // For comparison: eq. 18's right-hand side s(v) = sum_j k_j v/(v^2+1)^j summed naively
+    // in double, against sin(n x^)/n, over v in (0, 1].
+    const auto k = wavecontact::expansion_coefficients(n);
+    for (int i = 1; i <= 50; ++i) {
+      const double v = i / 50.0, w = 1 / (1 + v * v);
+      double sum = 0, power = 1;
+      for (const auto& kj : k) power *= w, sum += parse_rational(kj) * v * power;
+      naive_worst = std::max(naive_worst, std::abs(sum - std::sin(n * 2 * std::atan(v)) / n));
+    }
+    BOOST_TEST_MESSAGE("n = " << n << ": roughness pressure max error " << worst
+                              << " x E*H2 n pi/b1; naive eq. 18 sum max error " << naive_worst
+                              << " (|s(v)| <= 1/n)");
+    BOOST_TEST(worst <= 1e-12, "n = " << n << ": " << worst);
+  }
 }

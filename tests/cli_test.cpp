@@ -147,6 +147,9 @@ BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_with_one_line_and_no_output) {
       "load --H1 1 --b1 3 --E 1 --m 2 --a nan",                  // not finite
       "solve " + profile + " --m 2 --P 1e9",                     // beyond the closed form
       "load --H1 1 --b1 3 --m 1 --a 1 --E1 2 --nu1 0.7 --E2 3 --nu2 0.3",  // nu1 > 0.5
+      "load " + profile + " --m 2 --a 1 --H2 0.1",               // --H2 without --n
+      "load " + profile + " --m 2 --a 1 --H2 0.1 --n 7",         // odd n
+      "load " + profile + " --m 2 --a 1 --H2 -0.1 --n 8",        // negative H2
       "frobnicate",                                              // unknown subcommand
   };
   for (const auto& arguments : bad) {
@@ -170,4 +173,45 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
     }
   }
   fs::remove_all(out);
+}
+
+BOOST_AUTO_TEST_CASE(roughness_columns_are_filled) {
+  // n = 16, a = 0.5 b2, H2 = 1 (MATH.md fact 4): p_roughness(0) = 10.21387598287078.
+  const Result r = run("pressure " + profile + " --m 0 --H2 1 --n 16 --a " + number(0.5 * M_PI / 16) +
+                       " --x 0");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto v = fields(lines(r.out).at(1));
+  BOOST_TEST(v.at(3) == 10.21387598287078, tt::tolerance(1e-13));
+  BOOST_TEST(v.at(1) == v.at(2) + v.at(3), tt::tolerance(1e-15));
+
+  const Result paper = run("pressure " + profile + " --m 0 --H2 1 --n 16 --a " +
+                           number(0.5 * M_PI / 16) + " --x 0 --form paper");
+  BOOST_TEST_REQUIRE(paper.status == 0, paper.err);
+  BOOST_TEST(fields(lines(paper.out).at(1)).at(3) == 10.14091356098158, tt::tolerance(1e-13));
+
+  const Result load = run("load " + profile + " --m 0 --H2 1 --n 16 --a " + number(0.5 * M_PI / 16));
+  BOOST_TEST_REQUIRE(load.status == 0, load.err);
+  const auto l = fields(lines(load.out).at(1));
+  BOOST_TEST(l.at(3) == 1.399144397552393, tt::tolerance(1e-13));
+  BOOST_TEST(l.at(1) == l.at(2) + l.at(3), tt::tolerance(1e-15));
+}
+
+BOOST_AUTO_TEST_CASE(kcoef_prints_exact_coefficients) {
+  const Result r = run("kcoef --n 8");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  BOOST_TEST(r.out == "j,k\n1,-2\n2,84\n3,-1008\n4,5280\n5,-14080\n6,19968\n7,-14336\n8,4096\n");
+  const Result six = run("kcoef --n 6");
+  BOOST_TEST(lines(six.out).at(2) == "2,140/3");
+  const Result odd = run("kcoef --n 7");
+  BOOST_TEST(odd.status == 2);
+  BOOST_TEST(odd.out.empty());
+}
+
+BOOST_AUTO_TEST_CASE(negative_total_pressure_is_refused) {
+  const Result r = run("pressure --H1 1 --b1 10 --E 1 --m 10 --H2 0.5 --n 8 --a 4 --x 0");
+  BOOST_TEST(r.status == 3, r.err);
+  BOOST_TEST(r.out.empty(), r.out);
+  BOOST_TEST(r.err.find("at x = ") != std::string::npos, r.err);
+  BOOST_TEST(r.err.find("p = -") != std::string::npos, r.err);
+  BOOST_TEST(lines(r.err).size() == 1u);
 }
