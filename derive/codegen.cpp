@@ -213,7 +213,8 @@ class Printer {
     count(root);
   }
 
-  std::string body(int root, OpCounts& counts) {
+  // Temporaries, then `return value;` or, with a target, `const Scalar target = value;`.
+  std::string body(int root, OpCounts& counts, const std::string& target = "") {
     std::ostringstream os;
     for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
       if (uses_[i] == 0) continue;
@@ -224,7 +225,11 @@ class Printer {
         os << "  const Scalar " << names_[i] << " = " << value << ";\n";
       }
     }
-    os << "  return " << expression(root, true) << ";\n";
+    if (target.empty()) {
+      os << "  return " << expression(root, true) << ";\n";
+    } else {
+      os << "  const Scalar " << target << " = " << expression(root, true) << ";\n";
+    }
     return os.str();
   }
 
@@ -273,11 +278,26 @@ class Printer {
 }  // namespace
 
 std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
-  Graph graph(f.arguments);
-  const int root = graph.lower(f.value);
+  // Each statement is lowered on its own (its CSE is local); earlier targets are inputs.
+  std::vector<ex> inputs = f.arguments;
   OpCounts counts;
-  Printer printer(graph.nodes(), root);
-  const std::string body = printer.body(root, counts);
+  std::string body;
+  auto lower_and_print = [&](const ex& value, const std::string& target) {
+    Graph graph(inputs);
+    const int root = graph.lower(value);
+    body += Printer(graph.nodes(), root).body(root, counts, target);
+  };
+  for (const auto& statement : f.statements) {
+    const std::string& target = GiNaC::ex_to<GiNaC::symbol>(statement.target).get_name();
+    for (const ex& earlier : inputs) {
+      if (GiNaC::ex_to<GiNaC::symbol>(earlier).get_name() == target) {
+        throw std::invalid_argument("emit: statement " + target + " shadows a name in " + f.name);
+      }
+    }
+    lower_and_print(statement.value, target);
+    inputs.push_back(statement.target);
+  }
+  lower_and_print(f.value, "");
 
   std::ostringstream os;
   std::istringstream doc(f.doc);
@@ -289,7 +309,9 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   os << "template <typename Scalar>\ninline Scalar " << f.name << "(";
   for (std::size_t i = 0; i < f.arguments.size(); ++i) {
     const std::string& name = GiNaC::ex_to<GiNaC::symbol>(f.arguments[i]).get_name();
-    os << (i ? ", " : "") << "const Scalar& " << (f.value.has(f.arguments[i]) ? name : "/*" + name + "*/");
+    bool used = f.value.has(f.arguments[i]);
+    for (const auto& statement : f.statements) used = used || statement.value.has(f.arguments[i]);
+    os << (i ? ", " : "") << "const Scalar& " << (used ? name : "/*" + name + "*/");
   }
   os << ") {\n  using std::sqrt;\n" << body << "}\n";
   if (out_counts) *out_counts = counts;

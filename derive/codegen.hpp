@@ -21,12 +21,21 @@ struct OpCounts {
   }
 };
 
-// One emitted evaluator: `template <typename Scalar> Scalar name(const Scalar& arg...)`.
+// An intermediate result: `const Scalar target = value;`, where value may use the
+// arguments and earlier targets (all symbols).
+struct Statement {
+  GiNaC::ex target;
+  GiNaC::ex value;
+};
+
+// One emitted evaluator: `template <typename Scalar> Scalar name(const Scalar& arg...)`,
+// a straight-line program of statements followed by the returned value.
 struct EmittedFunction {
   std::string name;
   std::string doc;                          // comment lines above the function
   std::vector<GiNaC::ex> arguments;  // symbols; parameter names are their names
   GiNaC::ex value;
+  std::vector<Statement> statements = {};
 };
 
 // The C++ source of one function, with its op counts in a comment.

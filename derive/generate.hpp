@@ -16,6 +16,15 @@ struct GeneratedFile {
 // file's banner.
 std::string regeneration_command();
 
+// The n that generated/ ships: every even n from 2 to 64, 128 and 256.
+std::vector<int> default_roughness_n();
+
+// Everything in generated/: the waviness, the roughness evaluators for the default n
+// with their registry, and the manifests.
 std::vector<GeneratedFile> generate_all();
+
+// roughness_n<N>.hpp for each requested n (wavecontact-derive --n N ... --out DIR).
+// Throws std::invalid_argument for odd or non-positive n.
+std::vector<GeneratedFile> generate_roughness(const std::vector<int>& ns);
 
 }  // namespace wavecontact::derive

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -35,12 +36,18 @@ int main(int argc, char** argv) {
       "variables, bounded finite Hilbert inversion, loads) with GiNaC and emits C++ "
       "evaluators and a manifest of every derived expression."};
   std::string out = "generated";
+  std::vector<int> ns;
   app.add_option("--out", out, "output directory (created if missing)")->capture_default_str();
+  app.add_option("--n", ns,
+                 "write only the roughness evaluators roughness_n<N>.hpp for these even n "
+                 "(repeatable); without it, everything in generated/");
   CLI11_PARSE(app, argc, argv);
 
   try {
+    const auto files =
+        ns.empty() ? wavecontact::derive::generate_all() : wavecontact::derive::generate_roughness(ns);
     fs::create_directories(out);
-    for (const auto& file : wavecontact::derive::generate_all()) {
+    for (const auto& file : files) {
       write_atomically(fs::path(out) / file.name, file.contents);
     }
   } catch (const std::exception& e) {

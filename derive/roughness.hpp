@@ -19,6 +19,7 @@
 
 #include <ginac/ginac.h>
 
+#include "codegen.hpp"
 #include "radicals.hpp"
 
 namespace wavecontact::derive {
@@ -55,6 +56,16 @@ GiNaC::ex roughness_profile(int n);
 // the third kind (cos((j+1/2)x) = cos(x/2) V_j(cos x)); and the load.
 GiNaC::ex legendre_dirichlet_pressure(int n);
 GiNaC::ex legendre_dirichlet_load(int n);
+
+// The emitted evaluators for one n, as straight-line programs over the angle atoms:
+//   roughness_n<N>_pressure(E, H2, b1, Ca, Sa, Cx, Sx, D): p_r(x) in physical units, the
+//     Legendre values by their three-term recurrence and the sum over V_j(Cx) by Clenshaw's
+//     recurrence in Reinsch's form (d_j = c_j - 2 Sx b_{j+1} + d_{j+1}, b_j = d_j + b_{j+1}),
+//     which does not amplify rounding near Cx = 1;
+//   roughness_n<N>_load(E, H2, Ca, Sa): (pi/2) E H2 n [P_{n-1} - P_n](Ca) through
+//     D_{k+1} = (k D_k + (2k+1) Sa P_k)/(k+1), D_1 = Sa, free of cancellation near Ca = 1.
+EmittedFunction roughness_pressure_program(int n);
+EmittedFunction roughness_load_program(int n);
 
 // Legendre polynomial P_k(y), by the three-term recurrence.
 GiNaC::ex legendre_polynomial(int k, const GiNaC::ex& y);
