@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <mutex>
+#include <stdexcept>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "roughness_evaluators.hpp"  // generated/
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/waviness.hpp"
@@ -28,27 +32,17 @@ double eq20_sum(int n, double z, double one_minus_z) {
   return c * std::sin(2 * n * std::atan2(s, c)) / (n * s);
 }
 
-// P_0..P_n at y by the three-term recurrence (stable upward for |y| <= 1).
-std::vector<double> legendre_values(int n, double y) {
-  std::vector<double> P(n + 1);
-  P[0] = 1;
-  if (n >= 1) P[1] = y;
-  for (int k = 1; k < n; ++k) P[k + 1] = ((2 * k + 1) * y * P[k] - k * P[k - 1]) / (k + 1);
-  return P;
-}
+std::mutex registry_mutex;
 
-// P_{n-1}(y) - P_n(y) for y = 1 - t without cancellation near y = 1:
-// D_{k+1} = (k D_k + (2k+1) t P_k)/(k+1), D_1 = t.
-double legendre_step_difference(int n, double t, const std::vector<double>& P) {
-  double D = 0;
-  for (int k = 0; k < n; ++k) D = (k * D + (2 * k + 1) * t * P[k]) / (k + 1);
-  return D;
-}
-
-double roughness_load_exact(const TwoScaleParams& p, const ZoneAngles& zone,
-                            const std::vector<double>& legendre) {
-  const auto& r = p.roughness;
-  return pi / 2 * p.waviness.E * r.H2 * r.n * legendre_step_difference(r.n, zone.Sa, legendre);
+std::map<int, RoughnessEvaluator>& registry() {
+  static std::map<int, RoughnessEvaluator> evaluators = [] {
+    std::map<int, RoughnessEvaluator> built_in;
+    generated::for_each_roughness_evaluator([&](int n, auto pressure, auto load) {
+      built_in[n] = RoughnessEvaluator{n, pressure, load};
+    });
+    return built_in;
+  }();
+  return evaluators;
 }
 
 }  // namespace
@@ -58,6 +52,37 @@ void validate(const RoughnessParams& r, const char* function) {
   if (r.n < 2 || r.n % 2 != 0) {
     detail::domain_error(function, "n", r.n, "an even integer >= 2 (wavelength ratio b1/b2)");
   }
+}
+
+void register_roughness_evaluator(const RoughnessEvaluator& evaluator) {
+  validate(RoughnessParams{0, evaluator.n}, "wavecontact::register_roughness_evaluator");
+  if (evaluator.pressure == nullptr || evaluator.load == nullptr) {
+    throw std::invalid_argument("wavecontact::register_roughness_evaluator: null evaluator");
+  }
+  const std::lock_guard<std::mutex> lock(registry_mutex);
+  registry()[evaluator.n] = evaluator;
+}
+
+RoughnessEvaluator roughness_evaluator(int n) {
+  constexpr const char* function = "wavecontact::roughness_evaluator";
+  validate(RoughnessParams{0, n}, function);
+  const std::lock_guard<std::mutex> lock(registry_mutex);
+  const auto it = registry().find(n);
+  if (it == registry().end()) {
+    const std::string N = std::to_string(n);
+    detail::domain_error(function, "n", n,
+                         "a generated n; generate this one with `wavecontact-derive --n " + N +
+                             " --out DIR` or the CMake call wavecontact_generate(TARGET <target> N " +
+                             N + "), then register_roughness_evaluator()");
+  }
+  return it->second;
+}
+
+std::vector<int> available_roughness_n() {
+  const std::lock_guard<std::mutex> lock(registry_mutex);
+  std::vector<int> ns;
+  for (const auto& entry : registry()) ns.push_back(entry.first);
+  return ns;
 }
 
 std::vector<std::string> expansion_coefficients(int n) {
@@ -80,7 +105,7 @@ std::vector<std::string> expansion_coefficients(int n) {
 }
 
 TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form form)
-    : params_(params), a_(a), form_(form) {
+    : params_(params), a_(a), form_(form), zone_{} {
   constexpr const char* function = "wavecontact::TwoScaleContact";
   const WavinessParams& w = params.waviness;
   validate(w, function);
@@ -88,11 +113,11 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
   if (!(std::isfinite(a) && a > 0 && a <= w.b1 / 2)) {
     detail::domain_error(function, "a", a, "0 < a <= b1/2 = " + detail::format(w.b1 / 2));
   }
-  const ZoneAngles zone = zone_angles(a, w.b1);
-  legendre_ = legendre_values(params.roughness.n, zone.Ca);
+  zone_ = zone_angles(a, w.b1);
   waviness_load_ = wavecontact::load(w, a);  // the printed eq. 13 has the same load (derive/)
   if (form == Form::exact) {
-    roughness_load_ = roughness_load_exact(params, zone, legendre_);
+    evaluator_ = roughness_evaluator(params.roughness.n);
+    roughness_load_ = evaluator_.load(w.E, params.roughness.H2, zone_.Ca, zone_.Sa);
   } else {
     // Eq. 20 integrated over the zone: Gauss-Chebyshev (second kind) in u = alpha cos(phi),
     // geometric convergence for the smooth eq. 20 factor.
@@ -127,30 +152,6 @@ double TwoScaleContact::waviness_pressure(double x) const {
   return wavecontact::pressure(params_.waviness, a_, x, form_);
 }
 
-double TwoScaleContact::roughness_sum(double Cx, double Sx) const {
-  // Clenshaw for sum_j c_j V_j(Cx), c_j = P_{n-1-j}(Ca), V_{j+1} = 2 Cx V_j - V_{j-1},
-  // V_0 = 1, V_1 = 2 Cx - 1: b_j = c_j + 2 Cx b_{j+1} - b_{j+2}, sum = b_0 - b_1.
-  // Near Cx = 1 the plain recurrence amplifies rounding like n^2; Reinsch's modification
-  // carries d_j = b_j - b_{j+1} with 2 (Cx - 1) = -2 Sx taken from the atom Sx (no
-  // cancellation): d_j = c_j - 2 Sx b_{j+1} + d_{j+1}, b_j = d_j + b_{j+1}, sum = d_0.
-  const int n = params_.roughness.n;
-  if (Cx > 0.5) {
-    double b = 0, d = 0;
-    for (int j = n - 1; j >= 0; --j) {
-      d = legendre_[n - 1 - j] - 2 * Sx * b + d;
-      b = d + b;
-    }
-    return d;
-  }
-  double b1 = 0, b2 = 0;
-  for (int j = n - 1; j >= 0; --j) {
-    const double b0 = legendre_[n - 1 - j] + 2 * Cx * b1 - b2;
-    b2 = b1;
-    b1 = b0;
-  }
-  return b1 - b2;
-}
-
 double TwoScaleContact::roughness_pressure(double x) const {
   detail::require_finite("wavecontact::TwoScaleContact::roughness_pressure", "x", x);
   const WavinessParams& w = params_.waviness;
@@ -160,12 +161,12 @@ double TwoScaleContact::roughness_pressure(double x) const {
   const int n = params_.roughness.n;
   const double EH2 = w.E * params_.roughness.H2;
   if (form_ == Form::exact) {
-    return pi / w.b1 * EH2 * n / 2 * std::sqrt(point.D * (1 + point.Cx)) *
-           roughness_sum(point.Cx, point.Sx);
+    return evaluator_.pressure(w.E, params_.roughness.H2, w.b1, zone_.Ca, zone_.Sa, point.Cx,
+                               point.Sx, point.D);
   }
   // Eq. 20: (E* H2 n^2/2) sqrt(alpha^2 - u^2) sum_j k_j z^j, z = cos(a^/2) cos^2(x^/2);
   // 1 - z = 2 sin^2(a^/4) + cos(a^/2) sin^2(x^/2).
-  const double Ca = zone_angles(a_, w.b1).Ca;
+  const double Ca = zone_.Ca;
   const double half_cos = std::sqrt((1 + Ca) / 2);
   const double quarter_sin = boost::math::sin_pi(a_ / (4 * w.b1));
   const double z = half_cos * (1 + point.Cx) / 2;
@@ -191,10 +192,11 @@ std::vector<double> two_scale_half_widths(const TwoScaleParams& params, double P
   validate(params.roughness, function);
   detail::require_positive(function, "P", P);
   const double b1 = params.waviness.b1;
+  const RoughnessEvaluator evaluator = roughness_evaluator(params.roughness.n);
   auto residual = [&](double a) {
     const ZoneAngles zone = zone_angles(a, b1);
-    const auto legendre = legendre_values(params.roughness.n, zone.Ca);
-    return load(params.waviness, a) + roughness_load_exact(params, zone, legendre) - P;
+    return load(params.waviness, a) +
+           evaluator.load(params.waviness.E, params.roughness.H2, zone.Ca, zone.Sa) - P;
   };
   const int intervals = 8 * params.roughness.n + 64;
   std::vector<double> roots;

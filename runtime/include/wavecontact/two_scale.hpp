@@ -6,14 +6,18 @@
 // (derived and proven against the engine in derive/roughness.*):
 //   p_r(x) = (pi/b1) (E* H2 n/sqrt2) sqrt(cos x^ - cos a^) sum_{j<n} P_{n-1-j}(cos a^) cos((j+1/2) x^),
 //   P_r    = (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)],
-// a sum of n terms bounded by 1, evaluated by Clenshaw's recurrence: accurate in double
-// precision for any even n. The seed's eq. 19/20 (Form::paper) is evaluated exactly too,
-// through sum_j k_j z^j = cos(t) sin(2 n t)/(n sin t), cos^2(t) = z.
+// a sum of n terms bounded by 1, accurate in double precision for any even n. Its
+// evaluators are generated per n (generated/roughness_n<N>.hpp, every even n <= 64, 128
+// and 256 built in); others are generated with `wavecontact-derive --n N` or the CMake
+// function wavecontact_generate() and registered here. The seed's eq. 19/20 (Form::paper)
+// is evaluated exactly for any n, through sum_j k_j z^j = cos(t) sin(2 n t)/(n sin t),
+// cos^2(t) = z.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
 
 namespace wavecontact {
@@ -28,12 +32,30 @@ struct TwoScaleParams {
   RoughnessParams roughness;
 };
 
+// The generated evaluators of one n (generated/roughness_n<N>.hpp).
+struct RoughnessEvaluator {
+  int n;
+  double (*pressure)(const double& E, const double& H2, const double& b1, const double& Ca,
+                     const double& Sa, const double& Cx, const double& Sx, const double& D);
+  double (*load)(const double& E, const double& H2, const double& Ca, const double& Sa);
+};
+
+// Adds (or replaces) the evaluators for evaluator.n, e.g. those generated for a new n.
+void register_roughness_evaluator(const RoughnessEvaluator& evaluator);
+
+// The evaluators for n; throws std::domain_error naming the commands that generate them
+// if n is neither built in nor registered.
+RoughnessEvaluator roughness_evaluator(int n);
+
+// Every n with evaluators, in increasing order.
+std::vector<int> available_roughness_n();
+
 // The k_j of eq. 18, j = 1..n, exactly: k_j = (-1)^(n-j) C(n-1+j, n-j) 2^(2j-1)/n, printed
 // as integers (or p/q). Any even n >= 2.
 std::vector<std::string> expansion_coefficients(int n);
 
-// One contact zone of half-width a, 0 < a <= b1/2. Construction costs O(n) for the
-// Legendre values and O(n^2) for the admissibility scan; each pressure costs O(n).
+// One contact zone of half-width a, 0 < a <= b1/2. Construction costs O(n^2) for the
+// admissibility scan; each pressure costs O(n).
 class TwoScaleContact {
  public:
   TwoScaleContact(const TwoScaleParams& params, double a, Form form = Form::exact);
@@ -56,12 +78,11 @@ class TwoScaleContact {
   double half_width() const { return a_; }
 
  private:
-  double roughness_sum(double Cx, double Sx) const;  // sum_j P_{n-1-j}(Ca) V_j(Cx)
-
   TwoScaleParams params_;
   double a_;
   Form form_;
-  std::vector<double> legendre_;  // P_0..P_n at cos a^
+  ZoneAngles zone_;
+  RoughnessEvaluator evaluator_{};
   double waviness_load_ = 0, roughness_load_ = 0;
   bool admissible_ = true;
   double most_negative_x_ = 0, most_negative_pressure_ = 0;
