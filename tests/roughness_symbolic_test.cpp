@@ -122,3 +122,42 @@ BOOST_AUTO_TEST_CASE(eq19_is_exact_for_j1_only) {
     }
   }
 }
+
+BOOST_AUTO_TEST_CASE(legendre_dirichlet_form_solves_eq5_for_large_n) {
+  // Independent of the engine: the forward transform (1/pi) PV Int p(u)/(v - u) du of the
+  // stable form, at 40 digits by the midpoint rule in u = alpha cos(theta), must give
+  // g(v) = (E*/2) H2 n sin(n x^(v)) (normalised: E* = H2 = 1, b1 = pi).
+  const long saved = GiNaC::Digits;
+  GiNaC::Digits = 40;
+  const numeric alpha(1, 2);
+  const numeric ca = GiNaC::ex_to<numeric>(((1 - alpha * alpha) / (1 + alpha * alpha)).evalf());
+  for (int n : {16, 64, 256}) {
+    std::vector<numeric> P{1, ca};
+    for (int k = 1; k < n; ++k) P.push_back(((2 * k + 1) * ca * P[k] - k * P[k - 1]) / (k + 1));
+    // F(u) = p^(u) sqrt(alpha^2 - u^2), p^ = (n/sqrt2) sqrt(cos x - cos a) sum_j P_{n-1-j} cos((j+1/2) x).
+    auto F = [&](const numeric& u) {
+      const numeric x = GiNaC::ex_to<numeric>((2 * GiNaC::atan(u)).evalf());
+      numeric sum = 0;
+      for (int j = 0; j < n; ++j) sum += P[n - 1 - j] * GiNaC::cos((j + numeric(1, 2)) * x);
+      return numeric(n) / GiNaC::sqrt(numeric(2)) * GiNaC::sqrt(GiNaC::cos(x) - ca) * sum *
+             GiNaC::sqrt(alpha * alpha - u * u);
+    };
+    const int nodes = 4 * n + 200;
+    for (const numeric& v : {numeric(1, 5), numeric(9, 20)}) {
+      const numeric Fv = F(v);
+      numeric integral = 0;
+      for (int k = 0; k < nodes; ++k) {
+        const numeric u =
+            alpha * GiNaC::ex_to<numeric>(GiNaC::cos(GiNaC::Pi * (k + numeric(1, 2)) / nodes).evalf());
+        integral += (F(u) - Fv) / (v - u);
+      }
+      integral = integral / nodes;
+      const numeric g = numeric(n, 2) *
+                        GiNaC::ex_to<numeric>(GiNaC::sin(n * 2 * GiNaC::atan(v)).evalf());
+      const double residual = (GiNaC::abs(integral - g) / n).to_double();
+      BOOST_TEST_MESSAGE("n = " << n << ", v = " << v << ": |forward transform - g| / n = " << residual);
+      BOOST_TEST(residual < 1e-25, "n = " << n << ", v = " << v);
+    }
+  }
+  GiNaC::Digits = saved;
+}
