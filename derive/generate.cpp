@@ -48,7 +48,8 @@ std::string roughness_registry(const std::vector<int>& ns) {
   os << banner("//");
   os << "//\n// The roughness evaluators compiled into the runtime.\n#pragma once\n\n";
   for (int n : ns) os << "#include \"roughness_n" << n << ".hpp\"\n";
-  os << "\nnamespace wavecontact::generated {\n\n"
+  os << "\nnamespace wavecontact::generated {\n\n" << emit_function(roughness_full_contact_program())
+     << "\n"
         "// Calls visit(n, pressure, load) for every built-in n.\n"
         "template <typename Visitor>\nvoid for_each_roughness_evaluator(Visitor&& visit) {\n";
   for (int n : ns) {

@@ -193,6 +193,14 @@ EmittedFunction roughness_load_program(int n) {
           statements};
 }
 
+EmittedFunction roughness_full_contact_program() {
+  return {"roughness_full_contact_pressure",
+          "Eq. 15: pressure of the roughness harmonic in full contact, at its onset\n"
+          "(mean pressure p*_r = pi E* H2 n/(2 b1)); Cnx = cos(n pi x/b1).",
+          {sym::E(), sym::H2(), sym::b1(), sym::n(), sym::Cnx()},
+          GiNaC::Pi * sym::E() * sym::H2() * sym::n() / (2 * sym::b1()) * (sym::Cnx() + 1)};
+}
+
 RadicalSum eq19_term(int j, Radicals& radicals) {
   // 1/((alpha^2+1)^(j/2) (u^2+1)^j) = kappa^(-j) / (1+s)^j with kappa = kappa(-1) = sqrt(1+alpha^2).
   const unsigned index = radicals.index_of(-1);

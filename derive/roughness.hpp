@@ -67,6 +67,13 @@ GiNaC::ex legendre_dirichlet_load(int n);
 EmittedFunction roughness_pressure_program(int n);
 EmittedFunction roughness_load_program(int n);
 
+// Eq. 15, full contact of the harmonic: p_rf = p*_r (cos(n x^) + 1), p*_r = pi E* H2 n/(2 b1),
+// at the onset of full contact (mean pressure p*_r). It is the a -> b1 limit of the exact
+// partial-contact pressure, p*_r (cos(n x^) - 1), plus the uniform pressure 2 p*_r that full
+// contact admits (the periodic Hilbert transform of a constant vanishes); the tests check
+// that limit on the emitted per-n evaluators.
+EmittedFunction roughness_full_contact_program();
+
 // Legendre polynomial P_k(y), by the three-term recurrence.
 GiNaC::ex legendre_polynomial(int k, const GiNaC::ex& y);
 

@@ -10,7 +10,8 @@ struct All {
   GiNaC::realsymbol x{"x"}, xi{"xi"}, v{"v"}, u{"u"}, alpha{"alpha"}, t{"t"}, s{"s"};
   GiNaC::realsymbol E{"E"}, H1{"H1"}, b1{"b1"}, m{"m"};
   GiNaC::realsymbol Ca{"Ca"}, Sa{"Sa"}, Cx{"Cx"}, Sx{"Sx"}, D{"D"};
-  GiNaC::realsymbol H2{"H2"};  // appended: earlier symbols keep their serial numbers
+  // Appended: earlier symbols keep their serial numbers.
+  GiNaC::realsymbol H2{"H2"}, n{"n"}, Cnx{"Cnx"};
 };
 
 const All& all() {
@@ -32,6 +33,8 @@ const GiNaC::realsymbol& H1() { return all().H1; }
 const GiNaC::realsymbol& b1() { return all().b1; }
 const GiNaC::realsymbol& m() { return all().m; }
 const GiNaC::realsymbol& H2() { return all().H2; }
+const GiNaC::realsymbol& n() { return all().n; }
+const GiNaC::realsymbol& Cnx() { return all().Cnx; }
 const GiNaC::realsymbol& Ca() { return all().Ca; }
 const GiNaC::realsymbol& Sa() { return all().Sa; }
 const GiNaC::realsymbol& Cx() { return all().Cx; }

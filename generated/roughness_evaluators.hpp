@@ -41,6 +41,15 @@
 
 namespace wavecontact::generated {
 
+// Eq. 15: pressure of the roughness harmonic in full contact, at its onset
+// (mean pressure p*_r = pi E* H2 n/(2 b1)); Cnx = cos(n pi x/b1).
+// Total ops: 6 (1 add, 4 mul, 1 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline Scalar roughness_full_contact_pressure(const Scalar& E, const Scalar& H2, const Scalar& b1, const Scalar& n, const Scalar& Cnx) {
+  using std::sqrt;
+  return (n * (H2 * (E * ((Scalar(1.0) + Cnx) * Scalar(1.5707963267948966))))) / b1;
+}
+
 // Calls visit(n, pressure, load) for every built-in n.
 template <typename Visitor>
 void for_each_roughness_evaluator(Visitor&& visit) {
