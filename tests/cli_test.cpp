@@ -128,7 +128,7 @@ BOOST_AUTO_TEST_CASE(curve_has_a_row_per_point) {
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   const auto rows = lines(r.out);
   BOOST_TEST(rows.size() == 8u);
-  BOOST_TEST(rows[0] == "a,contact_fraction,pa_over_pstar,p0,p0_paper");
+  BOOST_TEST(rows[0] == "a,contact_fraction,pa_over_pstar,p0,p0_paper,admissible");
   BOOST_TEST(fields(rows.back()).at(1) == 0.5);
 }
 

@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "waviness.hpp"  // generated/
+#include "roughness_evaluators.hpp"  // generated/
+#include "waviness.hpp"
 
 namespace tt = boost::test_tools;
 using namespace wavecontact::generated;
@@ -31,4 +32,21 @@ BOOST_AUTO_TEST_CASE(instantiations_agree) {
   BOOST_TEST(d.paper() == static_cast<double>(l.paper()), tt::tolerance(1e-14));
   BOOST_TEST(d.load() == static_cast<double>(l.load()), tt::tolerance(1e-14));
   BOOST_TEST(f.ratio() == static_cast<float>(l.ratio()), tt::tolerance(1e-5f));
+}
+
+BOOST_AUTO_TEST_CASE(full_contact_is_the_limit_of_the_exact_roughness_pressure) {
+  // At a = b1 (Ca = -1, Sa = 2, D = 1 + Cx) the exact pressure is p*_r (cos(n x^) - 1); eq. 15
+  // adds the uniform 2 p*_r that full contact admits.
+  const double E = 2, H2 = 0.1, b1 = 3;
+  for (double xhat : {0.1, 0.9, 2.0, 3.0}) {
+    const double Cx = std::cos(xhat), Sx = 1 - Cx;
+    auto check = [&](int n, double partial) {
+      const double pstar = M_PI * E * H2 * n / (2 * b1);
+      const double full = roughness_full_contact_pressure<double>(E, H2, b1, n, std::cos(n * xhat));
+      BOOST_TEST(partial + 2 * pstar == full, tt::tolerance(1e-12));
+    };
+    check(2, roughness_n2_pressure<double>(E, H2, b1, -1, 2, Cx, Sx, 1 + Cx));
+    check(8, roughness_n8_pressure<double>(E, H2, b1, -1, 2, Cx, Sx, 1 + Cx));
+    check(64, roughness_n64_pressure<double>(E, H2, b1, -1, 2, Cx, Sx, 1 + Cx));
+  }
 }

@@ -164,7 +164,8 @@ std::string load_row(const TwoScaleParams& p, double a, Form form) {
 std::string curve_table(const TwoScaleParams& p, int points) {
   if (points < 1) throw UsageError("--points must be >= 1");
   std::ostringstream os;
-  os << "a,contact_fraction,pa_over_pstar,p0,p0_paper\n";
+  // Zones whose total pressure would be negative are listed with admissible = 0.
+  os << "a,contact_fraction,pa_over_pstar,p0,p0_paper,admissible\n";
   const WavinessParams& w = p.waviness;
   for (int k = 1; k <= points; ++k) {
     const double a = w.b1 / 2 * k / points;
@@ -172,7 +173,8 @@ std::string curve_table(const TwoScaleParams& p, int points) {
     os << number(a) << "," << number(wavecontact::contact_fraction(w, a)) << ","
        << number(exact.load() / (M_PI * w.E * w.H1)) << ","
        << number(exact.waviness_pressure(0) + exact.roughness_pressure(0)) << ","
-       << number(paper.waviness_pressure(0) + paper.roughness_pressure(0)) << "\n";
+       << number(paper.waviness_pressure(0) + paper.roughness_pressure(0)) << ","
+       << (exact.admissible() ? 1 : 0) << "\n";
   }
   return os.str();
 }

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/cos_pi.hpp>
 #include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/tools/roots.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
@@ -184,6 +185,17 @@ double TwoScaleContact::pressure(double x) const {
                              ": the single-zone (continuous contact) solution is not physical");
   }
   return waviness_pressure(x) + roughness_pressure(x);
+}
+
+double roughness_full_contact_pressure(const TwoScaleParams& params, double x) {
+  constexpr const char* function = "wavecontact::roughness_full_contact_pressure";
+  validate(params.waviness, function);
+  validate(params.roughness, function);
+  detail::require_finite(function, "x", x);
+  const WavinessParams& w = params.waviness;
+  const double n = params.roughness.n;
+  const double Cnx = boost::math::cos_pi(n * (reduce_to_period(x, w.b1) / w.b1));
+  return generated::roughness_full_contact_pressure(w.E, params.roughness.H2, w.b1, n, Cnx);
 }
 
 std::vector<double> two_scale_half_widths(const TwoScaleParams& params, double P) {

@@ -88,6 +88,10 @@ class TwoScaleContact {
   double most_negative_x_ = 0, most_negative_pressure_ = 0;
 };
 
+// Eq. 15: the roughness harmonic in full contact at its onset,
+// p_rf(x) = p*_r (cos(n pi x/b1) + 1), p*_r = pi E* H2 n/(2 b1).
+double roughness_full_contact_pressure(const TwoScaleParams& params, double x);
+
 // Every half-width a in (0, b1/2] at which the two-scale load (exact form) equals P, in
 // increasing order (the load need not be monotone when H2 n is large). Found by
 // bracketing on 8 n + 64 intervals and TOMS 748 in each.
