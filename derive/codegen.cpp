@@ -44,9 +44,21 @@ struct Node {
   }
 };
 
+// Inputs by name, with their position (Horner picks the earliest among equals).
+using InputIndex = std::map<std::string, int>;
+
+// The symbols of an expression.
+void collect_symbols(const ex& e, std::map<std::string, ex>& symbols) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    symbols.emplace(GiNaC::ex_to<GiNaC::symbol>(e).get_name(), e);
+    return;
+  }
+  for (const ex& operand : e) collect_symbols(operand, symbols);
+}
+
 class Graph {
  public:
-  explicit Graph(std::vector<ex> inputs) : inputs_(std::move(inputs)) {}
+  explicit Graph(const InputIndex& inputs) : inputs_(inputs) {}
 
   int lower(const ex& e) {
     auto [negative, node] = lower_signed(e);
@@ -79,9 +91,7 @@ class Graph {
     }
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
       const auto& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
-      const bool known = std::any_of(inputs_.begin(), inputs_.end(),
-                                     [&](const ex& s) { return s.is_equal(e); });
-      if (!known) throw std::invalid_argument("emit: symbol " + name + " is not an argument");
+      if (!inputs_.count(name)) throw std::invalid_argument("emit: symbol " + name + " is not an argument");
       return {false, intern({Op::Input, name})};
     }
     if (GiNaC::is_a<GiNaC::add>(e)) return {false, lower_sum(e)};
@@ -95,12 +105,17 @@ class Graph {
   int lower_sum(const ex& sum) {
     const ex e = sum.expand();
     if (!GiNaC::is_a<GiNaC::add>(e)) return lower(e);
+    std::map<std::string, ex> symbols;
+    collect_symbols(e, symbols);
     const ex* variable = nullptr;
-    int best = 1;
-    for (const ex& s : inputs_) {
-      if (!e.is_polynomial(s)) continue;
+    int best = 1, position = 0;
+    for (const auto& [name, s] : symbols) {
+      const auto it = inputs_.find(name);
+      if (it == inputs_.end() || !e.is_polynomial(s)) continue;
       const int d = e.degree(s);
-      if (d > best) best = d, variable = &s;
+      if (d > best || (d == best && variable != nullptr && it->second < position)) {
+        best = d, variable = &s, position = it->second;
+      }
     }
     if (variable == nullptr) return lower_terms(e);
     const ex x = *variable;
@@ -202,7 +217,7 @@ class Graph {
     return n % 2 == 0 ? square : make(Op::Mul, square, b);
   }
 
-  std::vector<ex> inputs_;
+  const InputIndex& inputs_;
   std::vector<Node> nodes_;
   std::map<Node, int> index_;
 };
@@ -279,7 +294,10 @@ class Printer {
 
 std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   // Each statement is lowered on its own (its CSE is local); earlier targets are inputs.
-  std::vector<ex> inputs = f.arguments;
+  InputIndex inputs;
+  for (const ex& argument : f.arguments) {
+    inputs.emplace(GiNaC::ex_to<GiNaC::symbol>(argument).get_name(), static_cast<int>(inputs.size()));
+  }
   OpCounts counts;
   std::string body;
   auto lower_and_print = [&](const ex& value, const std::string& target) {
@@ -289,13 +307,11 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   };
   for (const auto& statement : f.statements) {
     const std::string& target = GiNaC::ex_to<GiNaC::symbol>(statement.target).get_name();
-    for (const ex& earlier : inputs) {
-      if (GiNaC::ex_to<GiNaC::symbol>(earlier).get_name() == target) {
-        throw std::invalid_argument("emit: statement " + target + " shadows a name in " + f.name);
-      }
+    if (inputs.count(target)) {
+      throw std::invalid_argument("emit: statement " + target + " shadows a name in " + f.name);
     }
     lower_and_print(statement.value, target);
-    inputs.push_back(statement.target);
+    inputs.emplace(target, static_cast<int>(inputs.size()));
   }
   lower_and_print(f.value, "");
 
