@@ -199,8 +199,13 @@ std::vector<GeneratedFile> generate_all() {
 }
 
 std::vector<GeneratedFile> generate_roughness(const std::vector<int>& ns) {
+  constexpr int largest = 4096;  // about 3n lines per evaluator; beyond this, nobody's compiler
   std::vector<GeneratedFile> files;
   for (int n : ns) {
+    if (n < 2 || n % 2 != 0 || n > largest) {
+      throw std::invalid_argument("--n " + std::to_string(n) + ": n must be even, 2 <= n <= " +
+                                  std::to_string(largest));
+    }
     const std::string command = "wavecontact-derive --n " + std::to_string(n) + " --out DIR";
     files.push_back({"roughness_n" + std::to_string(n) + ".hpp", roughness_header(n, command)});
   }

@@ -24,7 +24,7 @@ std::vector<int> default_roughness_n();
 std::vector<GeneratedFile> generate_all();
 
 // roughness_n<N>.hpp for each requested n (wavecontact-derive --n N ... --out DIR).
-// Throws std::invalid_argument for odd or non-positive n.
+// Throws std::invalid_argument unless every n is even, 2 <= n <= 4096.
 std::vector<GeneratedFile> generate_roughness(const std::vector<int>& ns);
 
 }  // namespace wavecontact::derive
