@@ -1,6 +1,7 @@
-// wavecontact: command-line front end of the runtime library.
-// Output is CSV on stdout; a bad argument prints one line on stderr, exits 2 and
-// writes nothing on stdout (output is assembled before it is printed).
+// The wavecontact command line: argument parsing and the subcommands, as a function that
+// main() and the fuzz target share.
+// Output is CSV on `out`; a bad argument prints one line on `err`, returns 2 and writes
+// nothing on `out` (output is assembled before it is printed).
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -13,6 +14,7 @@
 
 #include <cmath>
 
+#include "app.hpp"
 #include "reproduce.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
@@ -162,7 +164,7 @@ std::string load_row(const TwoScaleParams& p, double a, Form form) {
 }
 
 std::string curve_table(const TwoScaleParams& p, int points) {
-  if (points < 1) throw UsageError("--points must be >= 1");
+  if (points < 1 || points > 1000000) throw UsageError("--points must be in [1, 1000000]");
   std::ostringstream os;
   // Zones whose total pressure would be negative are listed with admissible = 0.
   os << "a,contact_fraction,pa_over_pstar,p0,p0_paper,admissible\n";
@@ -181,7 +183,10 @@ std::string curve_table(const TwoScaleParams& p, int points) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace wavecontact::cli {
+
+int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+        bool allow_files) {
   CLI::App app{"wavecontact: elastic contact of the parametric wave curve (Tsukanov) with "
                "closed forms derived by wavecontact-derive"};
   app.require_subcommand(1);
@@ -255,28 +260,31 @@ int main(int argc, char** argv) {
       output = "j,k\n";
       for (std::size_t j = 0; j < k.size(); ++j) output += std::to_string(j + 1) + "," + k[j] + "\n";
     } else if (*reproduce) {
-      wavecontact::cli::reproduce(out_dir, std::cerr);
+      if (!allow_files) throw UsageError("reproduce is disabled here (it writes files)");
+      cli::reproduce(out_dir, err);
     }
-    std::cout << output;
+    out << output;
     return 0;
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return app.exit(e, out, err);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return app.exit(e, out, err);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "wavecontact: " << e.what() << "\n";
+    err << "wavecontact: " << e.what() << "\n";
     return 2;
   } catch (const UsageError& e) {
-    std::cerr << "wavecontact: " << e.what() << "\n";
+    err << "wavecontact: " << e.what() << "\n";
     return 2;
   } catch (const std::domain_error& e) {
-    std::cerr << "wavecontact: " << e.what() << "\n";
+    err << "wavecontact: " << e.what() << "\n";
     return 2;
   } catch (const InadmissibleError& e) {
-    std::cerr << "wavecontact: " << e.what() << "\n";
+    err << "wavecontact: " << e.what() << "\n";
     return 3;
   } catch (const std::exception& e) {
-    std::cerr << "wavecontact: error: " << e.what() << "\n";
+    err << "wavecontact: error: " << e.what() << "\n";
     return 1;
   }
 }
+
+}  // namespace wavecontact::cli
