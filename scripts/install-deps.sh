@@ -10,6 +10,7 @@ packages=(
   libboost-test-dev libboost-math-dev  # tests/ (Boost.Test), runtime/ (root finding, quadrature)
   libcli11-dev                     # the wavecontact CLI
   gnuplot-nox                      # reproduce: PNG plots
+  clang-14 libclang-rt-14-dev      # fuzzing (libFuzzer) and sanitizers
 )
 
 missing=()

@@ -1,6 +1,12 @@
 #!/usr/bin/env bash
-# Build, then run the whole test suite.
+# Build, then run the whole test suite: the normal build, then the same suite built with
+# AddressSanitizer and UndefinedBehaviorSanitizer (CMakePresets.json), then the fuzz
+# targets for a few seconds each (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-ctest --test-dir build --output-on-failure
+ctest --preset default
+cmake --preset sanitize
+cmake --build --preset sanitize -j"$(nproc)"
+ctest --preset sanitize
+scripts/fuzz.sh 10
