@@ -10,6 +10,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
+#include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
 #include "wavecontact/waviness.hpp"
 
@@ -185,5 +186,13 @@ BOOST_AUTO_TEST_CASE(domain_errors_name_function_parameter_and_value) {
   BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{1.0, 10.0, 2.0, INFINITY}, 1.0, 0.0),
                     std::domain_error);
   BOOST_CHECK_THROW(wavecontact::load(p, 0.0), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::zone_angles(11.0, 10.0), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::point_angles(2.0, 1.0, 10.0), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::point_angles(0.5, 1.0, 0.0), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::wave_curve(p, INFINITY), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::contact_half_width_for_pa_over_pstar(p, std::nan("")),
+                    std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::numerical_inversion([](double v) { return v; }, 0.5, 0.7, 10),
+                    std::domain_error);
   BOOST_CHECK_THROW(wavecontact::contact_half_width(p, -1.0), std::domain_error);
 }

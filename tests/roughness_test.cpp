@@ -162,5 +162,10 @@ BOOST_AUTO_TEST_CASE(invalid_roughness_is_refused) {
   BOOST_CHECK_THROW(TwoScaleContact({w, {-0.1, 8}}, 1.0), std::domain_error);
   BOOST_CHECK_THROW(TwoScaleContact({w, {0.1, 8}}, 6.0), std::domain_error);
   BOOST_CHECK_THROW(expansion_coefficients(5), std::domain_error);
+  BOOST_CHECK_THROW(expansion_coefficients(max_roughness_n + 2), std::domain_error);
+  BOOST_CHECK_THROW(TwoScaleContact({w, {0.1, 1 << 30}}, 1.0, Form::paper), std::domain_error);
+  BOOST_CHECK_THROW(TwoScaleContact({w, {0.1, 96}}, 1.0), std::domain_error);  // not generated
+  BOOST_CHECK_THROW(two_scale_half_widths({w, {0.1, 8}}, -1.0), std::domain_error);
+  BOOST_CHECK_THROW(roughness_full_contact_pressure({w, {0.1, 8}}, std::nan("")), std::domain_error);
   BOOST_TEST(expansion_coefficients(6).at(1) == "140/3");
 }

@@ -164,7 +164,7 @@ std::string load_row(const TwoScaleParams& p, double a, Form form) {
 }
 
 std::string curve_table(const TwoScaleParams& p, int points) {
-  if (points < 1 || points > 1000000) throw UsageError("--points must be in [1, 1000000]");
+  if (points < 1 || points > 2000) throw UsageError("--points must be in [1, 2000]");
   std::ostringstream os;
   // Zones whose total pressure would be negative are listed with admissible = 0.
   os << "a,contact_fraction,pa_over_pstar,p0,p0_paper,admissible\n";

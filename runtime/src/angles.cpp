@@ -6,6 +6,8 @@
 #include <boost/math/special_functions/cos_pi.hpp>
 #include <boost/math/special_functions/sin_pi.hpp>
 
+#include "validate.hpp"
+
 namespace wavecontact {
 
 namespace {
@@ -33,11 +35,24 @@ CosinePair cosine_pair(double y, double b1) {
 }  // namespace
 
 ZoneAngles zone_angles(double a, double b1) {
+  constexpr const char* function = "wavecontact::zone_angles";
+  detail::require_positive(function, "b1", b1);
+  if (!(std::isfinite(a) && a >= 0 && a <= b1)) {
+    detail::domain_error(function, "a", a, "0 <= a <= b1 = " + detail::format(b1));
+  }
   const CosinePair za = cosine_pair(a, b1);
   return {za.c, za.one_minus_c};
 }
 
 PointAngles point_angles(double x, double a, double b1) {
+  constexpr const char* function = "wavecontact::point_angles";
+  detail::require_positive(function, "b1", b1);
+  if (!(std::isfinite(a) && a >= 0 && a <= b1)) {
+    detail::domain_error(function, "a", a, "0 <= a <= b1 = " + detail::format(b1));
+  }
+  if (!(std::isfinite(x) && x >= 0 && x <= a)) {
+    detail::domain_error(function, "x", x, "0 <= x <= a = " + detail::format(a));
+  }
   const CosinePair zx = cosine_pair(x, b1);
   // cos x^ - cos a^ = 2 sin((a^ + x^)/2) sin((a^ - x^)/2); a - x is exact for x near a.
   const double D = 2 * sin_pi((a + x) / (2 * b1)) * sin_pi((a - x) / (2 * b1));

@@ -50,8 +50,10 @@ std::map<int, RoughnessEvaluator>& registry() {
 
 void validate(const RoughnessParams& r, const char* function) {
   if (!(std::isfinite(r.H2) && r.H2 >= 0)) detail::domain_error(function, "H2", r.H2, ">= 0, finite");
-  if (r.n < 2 || r.n % 2 != 0) {
-    detail::domain_error(function, "n", r.n, "an even integer >= 2 (wavelength ratio b1/b2)");
+  if (r.n < 2 || r.n % 2 != 0 || r.n > max_roughness_n) {
+    detail::domain_error(function, "n", r.n,
+                         "an even integer, 2 <= n <= " + std::to_string(max_roughness_n) +
+                             " (wavelength ratio b1/b2)");
   }
 }
 

@@ -16,10 +16,10 @@ struct PointAngles {
   double Cx, Sx, D;
 };
 
-// For the contact half-width a, 0 <= a <= b1.
+// For the contact half-width a, 0 <= a <= b1 (else std::domain_error).
 ZoneAngles zone_angles(double a, double b1);
 
-// For a point 0 <= x <= a of the zone.
+// For a point 0 <= x <= a of the zone (else std::domain_error).
 PointAngles point_angles(double x, double a, double b1);
 
 // x reduced to the period [-b1, b1] centred on an asperity's top.

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace wavecontact {
@@ -13,8 +14,12 @@ namespace wavecontact {
 // with `nodes` midpoint nodes. g must be smooth on [-alpha, alpha].
 template <typename G>
 double numerical_inversion(const G& g, double alpha, double u, int nodes) {
-  if (!(alpha > 0) || !(std::fabs(u) < alpha) || nodes < 1) {
-    throw std::domain_error("wavecontact::numerical_inversion: need 0 < |u| < alpha, nodes >= 1");
+  if (!(alpha > 0 && std::isfinite(alpha)) || !(std::fabs(u) < alpha) || nodes < 1) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "wavecontact::numerical_inversion: alpha = " << alpha << ", u = " << u
+       << ", nodes = " << nodes << " are invalid (valid: 0 < alpha finite, |u| < alpha, nodes >= 1)";
+    throw std::domain_error(os.str());
   }
   constexpr double pi = 3.14159265358979323846;
   const double gu = g(u);

@@ -22,9 +22,12 @@
 
 namespace wavecontact {
 
+// The largest wavelength ratio accepted (wavecontact-derive's limit too).
+inline constexpr int max_roughness_n = 4096;
+
 struct RoughnessParams {
   double H2;  // height of the roughness harmonic [length], >= 0
-  int n;      // wavelength ratio b1/b2, even, >= 2
+  int n;      // wavelength ratio b1/b2, even, 2 <= n <= max_roughness_n
 };
 
 struct TwoScaleParams {
@@ -51,7 +54,7 @@ RoughnessEvaluator roughness_evaluator(int n);
 std::vector<int> available_roughness_n();
 
 // The k_j of eq. 18, j = 1..n, exactly: k_j = (-1)^(n-j) C(n-1+j, n-j) 2^(2j-1)/n, printed
-// as integers (or p/q). Any even n >= 2.
+// as integers (or p/q). Any even n, 2 <= n <= max_roughness_n.
 std::vector<std::string> expansion_coefficients(int n);
 
 // One contact zone of half-width a, 0 < a <= b1/2. Construction costs O(n^2) for the
