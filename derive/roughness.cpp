@@ -54,19 +54,21 @@ numeric chebyshev_coefficient(int n, int j) {
 
 ex s_de_moivre(int n) { return sin_multiple(n, sym::v()) / n; }
 
-ex s_expansion(int n, const std::vector<numeric>& k) {
-  const ex v = sym::v();
-  ex sum = 0;
-  for (int j = 1; j <= n; ++j) sum += k[j - 1] * v / GiNaC::pow(1 + GiNaC::pow(v, 2), j);
-  return sum;
-}
-
 bool expansion_matches_de_moivre(int n, const std::vector<numeric>& k) {
   require_even(n, "expansion_matches_de_moivre");
-  const ex expansion = s_expansion(n, k), direct = s_de_moivre(n);
-  for (int i = 0; i <= 2 * n; ++i) {
-    const numeric v(i, n);  // distinct rationals in [0, 2]
-    if (!(expansion.subs(sym::v() == v) - direct.subs(sym::v() == v)).is_zero()) return false;
+  // With t = v^2: eq. 18 times (1+t)^n / v is sum_j k_j (1+t)^(n-j), and de Moivre's
+  // Im((1+iv)^(2n)) / (n v) is P(t)/n = sum_m (-1)^m C(2n, 2m+1) t^m / n. Both are
+  // polynomials of degree n - 1 in t: equal at the n points t = 0..n-1, they are equal.
+  std::vector<numeric> P(n);
+  for (int m = 0; m < n; ++m) {
+    const numeric c = GiNaC::binomial(numeric(2 * n), numeric(2 * m + 1));
+    P[m] = m % 2 == 0 ? c : -c;
+  }
+  for (int t = 0; t < n; ++t) {
+    numeric expansion = 0, direct = 0;  // both by Horner
+    for (int j = 1; j <= n; ++j) expansion = expansion * (1 + t) + k[j - 1];
+    for (int m = n - 1; m >= 0; --m) direct = direct * t + P[m];
+    if (expansion != direct / n) return false;
   }
   return true;
 }

@@ -33,13 +33,12 @@ std::vector<GiNaC::numeric> expansion_coefficients(int n);
 // sum_j k_j z^j = sqrt(z) U_{2n-1}(sqrt(z)) / n (Chebyshev U; z = 1/(1+v^2)).
 GiNaC::numeric chebyshev_coefficient(int n, int j);
 
-// s(v) = sin(n x^)/n by de Moivre, and as eq. 18's sum, as rational functions of v.
+// s(v) = sin(n x^)/n by de Moivre, as a rational function of v.
 GiNaC::ex s_de_moivre(int n);
-GiNaC::ex s_expansion(int n, const std::vector<GiNaC::numeric>& k);
 
-// Whether eq. 18's sum with the given k equals the de Moivre form exactly: both times
-// (1 + v^2)^n are polynomials of degree <= 2n, compared in exact rational arithmetic at
-// 2n + 1 points.
+// Whether eq. 18's sum with the given k equals the de Moivre form exactly: both, times
+// (1 + v^2)^n / v, are polynomials of degree n - 1 in v^2, compared in exact rational
+// arithmetic at n points.
 bool expansion_matches_de_moivre(int n, const std::vector<GiNaC::numeric>& k);
 
 // Largest relative difference between the finite product of eq. 16/17 and the de Moivre
