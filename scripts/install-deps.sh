@@ -11,6 +11,7 @@ packages=(
   libcli11-dev                     # the wavecontact CLI
   gnuplot-nox                      # reproduce: PNG plots
   clang-14 libclang-rt-14-dev      # fuzzing (libFuzzer) and sanitizers
+  libbenchmark-dev python3-sympy   # bench/ (Google Benchmark; SymPy is the baseline)
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Build, then run the whole test suite: the normal build, then the same suite built with
 # AddressSanitizer and UndefinedBehaviorSanitizer (CMakePresets.json), then the fuzz
-# targets for a few seconds each (scripts/fuzz.sh).
+# targets for a few seconds each (scripts/fuzz.sh), then the benchmarks in a smoke mode
+# (a few iterations; never timed assertions).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
@@ -10,3 +11,4 @@ cmake --preset sanitize
 cmake --build --preset sanitize -j"$(nproc)"
 ctest --preset sanitize
 scripts/fuzz.sh 10
+scripts/bench.sh --benchmark_min_time=0.001

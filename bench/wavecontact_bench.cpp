@@ -1,0 +1,192 @@
+// Benchmarks with their baselines in the same run, so that ratios are meaningful on a
+// shared machine (scripts/bench.sh prints them). Issue: performance.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "generate.hpp"   // derive/
+#include "roughness.hpp"  // derive/
+#include "waviness_csrc.hpp"
+#include "wavecontact/angles.hpp"
+#include "wavecontact/numerical_inversion.hpp"
+#include "wavecontact/two_scale.hpp"
+#include "wavecontact/waviness.hpp"
+
+namespace {
+
+using namespace wavecontact;
+
+constexpr double pi = 3.14159265358979323846;
+const WavinessParams waviness{1.0, 10.0, 2.0, 1.0};
+constexpr double half_width = 4.0;  // a/b1 = 0.4
+
+Eigen::ArrayXd zone_points(Eigen::Index count, double a) {
+  return Eigen::ArrayXd::LinSpaced(count, -0.999 * a, 0.999 * a);
+}
+
+// G(x^) = -(E/2) y'(x^) of the waviness, written from eq. 2 (as in the tests).
+double waviness_rhs(double v) {
+  const double x = 2 * std::atan(v), d = waviness.m * std::cos(x) + 1;
+  return waviness.E * waviness.H1 / 2 * (waviness.m + 1) * std::sin(x) / (d * d);
+}
+
+// The smallest node count (doubling) at which the numerical inversion agrees with the
+// closed form to `tolerance` (relative to scale) at 16 points: equal accuracy.
+template <typename Rhs, typename Closed>
+int nodes_for_accuracy(const Rhs& rhs, const Closed& closed, double a, double b1, double scale,
+                       double tolerance) {
+  const double alpha = std::tan(pi * a / (2 * b1));
+  for (int nodes = 8;; nodes *= 2) {
+    double worst = 0;
+    for (int i = 0; i < 16; ++i) {
+      const double x = a * i / 16.0, u = std::tan(pi * x / (2 * b1));
+      worst = std::max(worst, std::abs(pi / b1 * numerical_inversion(rhs, alpha, u, nodes) - closed(x)));
+    }
+    if (worst <= tolerance * scale || nodes > (1 << 20)) return nodes;
+  }
+}
+
+void BM_waviness_pressure_generated(benchmark::State& state) {
+  const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
+  for (auto _ : state) {
+    Eigen::ArrayXd p = pressure(waviness, half_width, xs);
+    benchmark::DoNotOptimize(p.data());
+  }
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_waviness_pressure_generated)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void BM_waviness_pressure_no_cse(benchmark::State& state) {
+  const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
+  const ZoneAngles zone = zone_angles(half_width, waviness.b1);
+  for (auto _ : state) {
+    Eigen::ArrayXd p(xs.size());
+    for (Eigen::Index i = 0; i < xs.size(); ++i) {
+      const PointAngles point = point_angles(std::fabs(xs[i]), half_width, waviness.b1);
+      p[i] = bench::waviness_pressure_csrc(waviness.E, waviness.H1, waviness.b1, waviness.m, zone.Ca,
+                                           zone.Sa, point.Cx, point.Sx, point.D);
+    }
+    benchmark::DoNotOptimize(p.data());
+  }
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_waviness_pressure_no_cse)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+void BM_waviness_pressure_numerical(benchmark::State& state) {
+  const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
+  const double alpha = std::tan(pi * half_width / (2 * waviness.b1));
+  const double scale = pressure(waviness, half_width, 0.0);
+  const int nodes = nodes_for_accuracy(
+      waviness_rhs, [](double x) { return pressure(waviness, half_width, x); }, half_width,
+      waviness.b1, scale, 64 * 2.220446049250313e-16);
+  for (auto _ : state) {
+    double sum = 0;
+    for (Eigen::Index i = 0; i < xs.size(); ++i) {
+      sum += numerical_inversion(waviness_rhs, alpha, std::tan(pi * xs[i] / (2 * waviness.b1)), nodes);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["nodes"] = nodes;
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_waviness_pressure_numerical)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+TwoScaleParams rough(int n) { return {waviness, {0.01 / n, n}}; }
+
+void BM_roughness_pressure_generated(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const TwoScaleContact contact(rough(n), half_width);
+  const Eigen::ArrayXd xs = zone_points(100000, half_width);
+  for (auto _ : state) {
+    double sum = 0;
+    for (Eigen::Index i = 0; i < xs.size(); ++i) sum += contact.roughness_pressure(xs[i]);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_roughness_pressure_generated)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
+
+void BM_roughness_pressure_numerical(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const TwoScaleParams params = rough(n);
+  const TwoScaleContact contact(params, half_width);
+  const double H2 = params.roughness.H2, b1 = waviness.b1, E = waviness.E;
+  const auto rhs = [&](double v) { return E / 2 * H2 * n * std::sin(n * 2 * std::atan(v)); };
+  const double scale = E * H2 * n * pi / b1;
+  // Equal accuracy: the generated evaluator is within 2e-13 of the scale up to n = 256.
+  const int nodes = nodes_for_accuracy(
+      rhs, [&](double x) { return contact.roughness_pressure(x); }, half_width, b1, scale, 2e-13);
+  const double alpha = std::tan(pi * half_width / (2 * b1));
+  const Eigen::ArrayXd xs = zone_points(1000, half_width);
+  for (auto _ : state) {
+    double sum = 0;
+    for (Eigen::Index i = 0; i < xs.size(); ++i) {
+      sum += numerical_inversion(rhs, alpha, std::tan(pi * xs[i] / (2 * b1)), nodes);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  state.counters["nodes"] = nodes;
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_roughness_pressure_numerical)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
+
+void BM_load(benchmark::State& state) {
+  double a = 0.5;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(load(waviness, a));
+    a = a < 4.9 ? a + 0.01 : 0.5;
+  }
+}
+BENCHMARK(BM_load);
+
+void BM_contact_half_width(benchmark::State& state) {
+  double P = 0.05;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(contact_half_width(waviness, P));
+    P = P < 1.5 ? P + 0.01 : 0.05;
+  }
+}
+BENCHMARK(BM_contact_half_width);
+
+void BM_pa_over_pstar_curve_1000(benchmark::State& state) {
+  for (auto _ : state) {
+    double sum = 0;
+    for (int i = 1; i <= 1000; ++i) sum += pa_over_pstar(waviness, waviness.b1 / 2 * i / 1000);
+    benchmark::DoNotOptimize(sum);
+  }
+}
+BENCHMARK(BM_pa_over_pstar_curve_1000)->Unit(benchmark::kMicrosecond);
+
+void BM_kcoefficients(benchmark::State& state) {
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(derive::expansion_coefficients(static_cast<int>(state.range(0))));
+  }
+}
+BENCHMARK(BM_kcoefficients)->Arg(64)->Arg(128)->Arg(256)->Arg(1024)->Unit(benchmark::kMillisecond);
+
+void BM_regenerate_default(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(derive::generate_all());
+}
+BENCHMARK(BM_regenerate_default)->Iterations(1)->Unit(benchmark::kSecond);
+
+// The user's alternative: SymPy doing the same expansion (bench/sympy_kcoef.py).
+void BM_sympy_kcoefficients(benchmark::State& state) {
+  const std::string command = "python3 " WAVECONTACT_SYMPY_BASELINE " " +
+                              std::to_string(state.range(0)) + " > /dev/null 2>&1";
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    if (std::system(command.c_str()) != 0) {
+      state.SkipWithError("python3 with sympy is not available");
+      break;
+    }
+    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+}
+BENCHMARK(BM_sympy_kcoefficients)->Arg(128)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace

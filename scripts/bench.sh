@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Runs the benchmarks and prints each figure next to its baseline, with the ratio.
+#   scripts/bench.sh [extra Google Benchmark options, e.g. --benchmark_min_time=0.01]
+# Raw results: build/bench/results.json (--benchmark_format=json).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+[ -x build/bench/wavecontact_bench ] || scripts/build.sh
+build/bench/wavecontact_bench --benchmark_out=build/bench/results.json \
+  --benchmark_out_format=json "$@"
+python3 - build/bench/results.json <<'PY'
+import json
+import sys
+
+results = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+
+def per_item_ns(name):
+    b = results.get(name)
+    if b is None or "items_per_second" not in b:
+        return None
+    return 1e9 / b["items_per_second"]
+
+def time_ns(name):
+    b = results.get(name)
+    if b is None or b.get("error_occurred"):
+        return None
+    scale = {"ns": 1, "us": 1e3, "ms": 1e6, "s": 1e9}[b["time_unit"]]
+    return b["real_time"] * scale
+
+rows = [
+    ("waviness pressure, ns/point", per_item_ns, "BM_waviness_pressure_generated/1000000",
+     [("numerical inversion", "BM_waviness_pressure_numerical/10000"),
+      ("print_csrc, no CSE", "BM_waviness_pressure_no_cse/1000000")]),
+]
+for n in (16, 64, 256):
+    rows.append((f"roughness pressure n={n}, ns/point", per_item_ns,
+                 f"BM_roughness_pressure_generated/{n}",
+                 [("numerical inversion", f"BM_roughness_pressure_numerical/{n}")]))
+rows.append(("k_1..k_128, ns", time_ns, "BM_kcoefficients/128",
+             [("SymPy", "BM_sympy_kcoefficients/128/iterations:1/manual_time")]))
+print(f"\n{'figure':40} {'ours':>12} {'baseline':>24} {'value':>12} {'ratio':>8}")
+for label, measure, ours_name, baselines in rows:
+    ours = measure(ours_name)
+    for baseline_label, baseline_name in baselines:
+        base = measure(baseline_name)
+        if ours is None or base is None:
+            print(f"{label:40} {'n/a':>12} {baseline_label:>24} {'n/a':>12}")
+            continue
+        print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
+for label, name in (("load P(a), ns/call", "BM_load"), ("inverse a(P), ns/call", "BM_contact_half_width"),
+                    ("pa/p* curve of 1000 points, ns", "BM_pa_over_pstar_curve_1000"),
+                    ("k_1..k_1024, ns", "BM_kcoefficients/1024"),
+                    ("full regeneration of generated/, ns", "BM_regenerate_default/iterations:1")):
+    value = time_ns(name)
+    print(f"{label:40} {value if value is not None else float('nan'):12.4g}")
+PY
