@@ -1,0 +1,30 @@
+// The figures of `wavecontact reproduce`: each is a CSV table (with a header line) and the
+// gnuplot commands that plot it.
+#pragma once
+
+#include <string>
+
+namespace wavecontact::cli {
+
+struct Figure {
+  std::string name;    // file stem
+  std::string csv;     // table with a header line
+  std::string script;  // gnuplot commands after the terminal/output lines
+};
+
+// 10 significant digits, for the tables.
+std::string number(double value);
+
+// The gnuplot selector of rows [block * rows, (block + 1) * rows) of a long-format table.
+std::string rows_of_block(int block, int rows);
+
+// The seed paper's figures.
+Figure wave_curves();              // Fig. 1
+Figure two_scale_profiles();       // Fig. 2
+Figure roughness_integrand();      // Fig. 4
+Figure pressure_distributions();   // Fig. 5a
+Figure contact_length();           // Fig. 6
+Figure centre_pressure();          // Fig. 7
+Figure two_scale_contact_area();   // Fig. 8
+
+}  // namespace wavecontact::cli
