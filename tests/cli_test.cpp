@@ -106,12 +106,33 @@ BOOST_AUTO_TEST_CASE(load_and_solve_print_one_row) {
 
   const Result s = run("solve " + profile + " --m 10 --P 1.070213575867781");
   BOOST_TEST_REQUIRE(s.status == 0, s.err);
-  BOOST_TEST(lines(s.out).at(0) == "P,a,contact_fraction");
+  BOOST_TEST(lines(s.out).at(0) == "P,a,contact_fraction,stable,admissible");
+  BOOST_TEST(lines(s.out).size() == 2u);
+  BOOST_TEST(lines(s.out).at(1).substr(lines(s.out).at(1).size() - 4) == ",1,1");
   BOOST_TEST(fields(lines(s.out).at(1)).at(1) == 0.45 * M_PI, tt::tolerance(1e-13));
 
   const Result ratio = run("solve " + profile + " --m 0 --pa-over-pstar 0.25");
   BOOST_TEST_REQUIRE(ratio.status == 0, ratio.err);
   BOOST_TEST(fields(lines(ratio.out).at(1)).at(2) == 1.0 / 3.0, tt::tolerance(1e-14));  // sin^2(pi/6)
+}
+
+BOOST_AUTO_TEST_CASE(solve_in_the_snap_through_range_lists_every_zone) {
+  // m = 10: P(a) peaks at 1.80 pi E* H1 beyond b1/2 and falls to 0.686 pi at full contact.
+  const Result s = run("solve " + profile + " --m 10 --P 4");
+  BOOST_TEST_REQUIRE(s.status == 0, s.err);
+  const auto rows = lines(s.out);
+  BOOST_TEST_REQUIRE(rows.size() == 3u, s.out);
+  const auto stable = fields(rows[1]), unstable = fields(rows[2]);
+  BOOST_TEST(stable.at(0) == 4.0, tt::tolerance(1e-13));
+  BOOST_TEST(unstable.at(0) == 4.0, tt::tolerance(1e-13));
+  BOOST_TEST(stable.at(2) < 0.5);
+  BOOST_TEST(unstable.at(2) > 0.5);
+  BOOST_TEST((stable.at(3) == 1 && stable.at(4) == 1));
+  BOOST_TEST((unstable.at(3) == 0 && unstable.at(4) == 0));  // negative on the lower flank
+  // Asking for the pressure at that load names both half-widths.
+  const Result p = run("pressure " + profile + " --m 10 --P 4 --x 0");
+  BOOST_TEST(p.status == 2);
+  BOOST_TEST(p.err.find("(unstable)") != std::string::npos, p.err);
 }
 
 BOOST_AUTO_TEST_CASE(material_constants_replace_E) {
@@ -134,7 +155,7 @@ BOOST_AUTO_TEST_CASE(curve_has_a_row_per_point) {
 
 BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_with_one_line_and_no_output) {
   const std::vector<std::string> bad{
-      "pressure " + profile + " --m 2 --a 9 --x 0",              // a > b1/2
+      "pressure " + profile + " --m 2 --a 4 --x 0",              // a >= b1
       "pressure " + profile + " --m -1 --a 1 --x 0",             // m < 0
       "pressure " + profile + " --m 2 --x 0",                    // no zone
       "pressure " + profile + " --m 2 --a 1 --P 1 --x 0",        // two zones
@@ -145,7 +166,7 @@ BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_with_one_line_and_no_output) {
       "load " + profile + " --m 2 --a 1 --colour red",           // unknown option
       "load --H1 0 --b1 3 --E 1 --m 2 --a 1",                    // H1 = 0
       "load --H1 1 --b1 3 --E 1 --m 2 --a nan",                  // not finite
-      "solve " + profile + " --m 2 --P 1e9",                     // beyond the closed form
+      "solve " + profile + " --m 2 --P 1e9",                     // full contact
       "load --H1 1 --b1 3 --m 1 --a 1 --E1 2 --nu1 0.7 --E2 3 --nu2 0.3",  // nu1 > 0.5
       "load " + profile + " --m 2 --a 1 --H2 0.1",               // --H2 without --n
       "load " + profile + " --m 2 --a 1 --H2 0.1 --n 7",         // odd n

@@ -12,6 +12,7 @@
 
 #include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
+#include "wavecontact/stability.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace tt = boost::test_tools;
@@ -140,9 +141,10 @@ BOOST_AUTO_TEST_CASE(pressure_is_periodic_even_and_zero_outside) {
 }
 
 BOOST_AUTO_TEST_CASE(inverse_load_is_monotone_and_bounded) {
-  const WavinessParams p{1.0, 10.0, 8.0, 1.0};
+  // m = 0.5: P(a) rises all the way to full contact, so every load has one zone.
+  const WavinessParams p{1.0, 10.0, 0.5, 1.0};
   double previous = 0;
-  for (double fa : {0.01, 0.1, 0.3, 0.45, 0.5}) {
+  for (double fa : {0.01, 0.1, 0.3, 0.45, 0.5, 0.6, 0.9}) {
     const double P = wavecontact::load(p, fa * p.b1);
     BOOST_TEST(P > previous);
     previous = P;
@@ -150,8 +152,15 @@ BOOST_AUTO_TEST_CASE(inverse_load_is_monotone_and_bounded) {
     BOOST_TEST(wavecontact::contact_half_width_for_pa_over_pstar(
                    p, wavecontact::pa_over_pstar(p, fa * p.b1)) == fa * p.b1,
                tt::tolerance(1e-13));
+    if (fa <= 0.5) {
+      BOOST_TEST(wavecontact::single_asperity_half_width(p, P) == fa * p.b1, tt::tolerance(1e-13));
+    }
   }
-  BOOST_CHECK_THROW(wavecontact::contact_half_width(p, previous * 1.001), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::single_asperity_half_width(p, wavecontact::load(p, 5.0) * 1.001),
+                    std::domain_error);
+  const double full = wavecontact::load(p, p.b1);
+  BOOST_TEST(wavecontact::LoadCurve(p).full_contact_load() == full);
+  BOOST_CHECK_THROW(wavecontact::contact_half_width(p, full * 1.001), std::domain_error);
 }
 
 BOOST_AUTO_TEST_CASE(reduced_modulus_is_eq_7) {
@@ -172,9 +181,12 @@ BOOST_AUTO_TEST_CASE(domain_errors_name_function_parameter_and_value) {
     }
     return "no exception";
   };
-  const std::string too_wide = message([&] { wavecontact::pressure(p, 5.5, 0.0); });
+  const std::string too_wide = message([&] { wavecontact::pressure(p, 10.5, 0.0); });
   BOOST_TEST(too_wide.find("wavecontact::pressure") != std::string::npos, too_wide);
-  BOOST_TEST(too_wide.find("a = 5.5") != std::string::npos, too_wide);
+  BOOST_TEST(too_wide.find("a = 10.5") != std::string::npos, too_wide);
+  // The printed eq. 14 continued beyond b1/2 has a pole at cos(pi a/b1) = -1/m.
+  const std::string pole = message([&] { wavecontact::pressure(p, 7.0, 0.0, Form::paper); });
+  BOOST_TEST(pole.find("pole") != std::string::npos, pole);
   const std::string negative_m =
       message([&] { wavecontact::load(WavinessParams{1.0, 10.0, -1.0, 1.0}, 1.0); });
   BOOST_TEST(negative_m.find("wavecontact::load: m = -1") != std::string::npos, negative_m);

@@ -85,7 +85,7 @@ BOOST_AUTO_TEST_CASE(delicate_but_valid_inputs) {
       const double P = load(p, a), p0 = pressure(p, a, 0.0), edge = pressure(p, a, a * (1 - 1e-15));
       BOOST_TEST((std::isfinite(P) && P >= 0 && std::isfinite(p0) && p0 >= 0 && edge >= 0),
                  "m = " << m << ", a = " << a);
-      if (a >= 1e-12) BOOST_TEST(contact_half_width(p, P) == a, tt::tolerance(1e-12));
+      if (a >= 1e-12) BOOST_TEST(single_asperity_half_width(p, P) == a, tt::tolerance(1e-12));
     }
     // a -> b1/2 from below is continuous.
     BOOST_TEST(load(p, 5.0 * (1 - 1e-12)) == load(p, 5.0), tt::tolerance(1e-9 * (1 + m)));

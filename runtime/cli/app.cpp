@@ -17,6 +17,7 @@
 #include "app.hpp"
 #include "reproduce.hpp"
 #include "wavecontact/two_scale.hpp"
+#include "wavecontact/stability.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace {
@@ -101,11 +102,15 @@ TwoScaleContact admissible_contact(const TwoScaleParams& params, double a, Form 
   return contact;
 }
 
-// Every a carrying the load P (one for the waviness alone; possibly several with roughness).
-std::vector<double> half_widths_for_load(const ProfileOptions& profile, double P) {
-  if (!profile.has_roughness()) return {wavecontact::contact_half_width(profile.params(), P)};
-  const std::vector<double> roots = wavecontact::two_scale_half_widths(profile.two_scale(), P);
-  if (roots.empty()) throw UsageError("no contact half-width a <= b1/2 carries P = " + number(P));
+// Every a carrying the load P, with its stability and admissibility.
+std::vector<wavecontact::Equilibrium> equilibria(const ProfileOptions& profile, double P) {
+  const std::vector<wavecontact::Equilibrium> roots =
+      profile.has_roughness() ? wavecontact::two_scale_half_widths(profile.two_scale(), P)
+                              : wavecontact::LoadCurve(profile.params()).equilibria(P);
+  if (roots.empty()) {
+    throw UsageError("no single contact zone 0 < a < b1 carries P = " + number(P) +
+                     " (beyond the largest such load the contact is full)");
+  }
   return roots;
 }
 
@@ -114,29 +119,32 @@ struct ZoneOptions {
   std::optional<double> a, P, ratio;
 
   void add_to(CLI::App* app, bool with_a) {
-    if (with_a) app->add_option("--a", a, "contact half-width a, 0 < a <= b1/2 [length]");
+    if (with_a) app->add_option("--a", a, "contact half-width a, 0 < a < b1 [length]");
     app->add_option("--P", P, "load per unit length P [pressure x length]");
     app->add_option("--pa-over-pstar", ratio, "dimensionless mean pressure pa/p*");
   }
 
-  // Every half-width matching the options, in increasing order.
-  std::vector<double> half_widths(const ProfileOptions& profile) const {
+  // The load the options fix, if they do not give --a.
+  std::optional<double> load(const ProfileOptions& profile) const {
     const int given = (a ? 1 : 0) + (P ? 1 : 0) + (ratio ? 1 : 0);
     if (given != 1) throw UsageError("give exactly one of --a, --P, --pa-over-pstar");
-    if (a) return {*a};
+    if (a) return std::nullopt;
     const WavinessParams p = profile.params();
-    const double load = P ? *P : *ratio * M_PI * p.E * p.H1;  // pa/p* = P/(pi E* H1)
-    return half_widths_for_load(profile, load);
+    return P ? *P : *ratio * M_PI * p.E * p.H1;  // pa/p* = P/(pi E* H1)
   }
 
   double half_width(const ProfileOptions& profile) const {
-    const std::vector<double> roots = half_widths(profile);
+    const std::optional<double> P = load(profile);
+    if (!P) return *a;
+    const std::vector<wavecontact::Equilibrium> roots = equilibria(profile, *P);
     if (roots.size() > 1) {
       std::string list;
-      for (double r : roots) list += (list.empty() ? "" : ", ") + number(r);
+      for (const auto& r : roots) {
+        list += (list.empty() ? "" : ", ") + number(r.a) + (r.stable ? " (stable)" : " (unstable)");
+      }
       throw UsageError("the load is carried by several half-widths a = " + list + "; give --a");
     }
-    return roots.front();
+    return roots.front().a;
   }
 };
 
@@ -208,7 +216,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
   ProfileOptions load_profile;
   std::optional<double> load_a;
   load_profile.add_to(load, true);
-  load->add_option("--a", load_a, "contact half-width a, 0 < a <= b1/2 [length]")->required();
+  load->add_option("--a", load_a, "contact half-width a, 0 < a < b1 [length]")->required();
 
   auto* solve = app.add_subcommand("solve", "contact half-width for a load");
   ProfileOptions solve_profile;
@@ -238,21 +246,23 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
       output = "a,P,P_waviness,P_roughness,pa,pa_over_pstar,contact_fraction\n" +
                load_row(load_profile.two_scale(), *load_a, load_profile.selected_form());
     } else if (*solve) {
-      // One row per admissible half-width carrying the load (several are possible with
-      // roughness); an error naming the first refusal if none is admissible.
+      // One row per half-width carrying the load (several in a snap-through range or with
+      // roughness), flagged stable (dP/da > 0) and admissible (p >= 0); an error naming
+      // the refusal if none is admissible.
       const TwoScaleParams p = solve_profile.two_scale();
-      std::string rows, first_refusal;
-      for (double a : solve_zone.half_widths(solve_profile)) {
-        try {
-          const TwoScaleContact contact = admissible_contact(p, a, Form::exact);
-          rows += number(contact.load()) + "," + number(a) + "," +
-                  number(wavecontact::contact_fraction(p.waviness, a)) + "\n";
-        } catch (const InadmissibleError& e) {
-          if (first_refusal.empty()) first_refusal = e.what();
-        }
+      const std::optional<double> P = solve_zone.load(solve_profile);
+      if (!P) throw UsageError("give --P or --pa-over-pstar");
+      const std::vector<wavecontact::Equilibrium> found = equilibria(solve_profile, *P);
+      std::string rows;
+      bool any_admissible = false;
+      for (const auto& e : found) {
+        any_admissible = any_admissible || e.admissible;
+        rows += number(TwoScaleContact(p, e.a, Form::exact).load()) + "," + number(e.a) + "," +
+                number(wavecontact::contact_fraction(p.waviness, e.a)) + "," +
+                (e.stable ? "1" : "0") + "," + (e.admissible ? "1" : "0") + "\n";
       }
-      if (rows.empty()) throw InadmissibleError(first_refusal);
-      output = "P,a,contact_fraction\n" + rows;
+      if (!any_admissible) admissible_contact(p, found.front().a, Form::exact);  // throws
+      output = "P,a,contact_fraction,stable,admissible\n" + rows;
     } else if (*curve) {
       output = curve_table(curve_profile.two_scale(), points);
     } else if (*kcoef) {

@@ -113,8 +113,13 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
   const WavinessParams& w = params.waviness;
   validate(w, function);
   validate(params.roughness, function);
-  if (!(std::isfinite(a) && a > 0 && a <= w.b1 / 2)) {
-    detail::domain_error(function, "a", a, "0 < a <= b1/2 = " + detail::format(w.b1 / 2));
+  // The roughness solution holds for any zone; the printed eq. 19/20 only up to b1/2.
+  if (form == Form::exact && !(std::isfinite(a) && a > 0 && a < w.b1)) {
+    detail::domain_error(function, "a", a, "0 < a < b1 = " + detail::format(w.b1));
+  }
+  if (form == Form::paper && !(std::isfinite(a) && a > 0 && a <= w.b1 / 2)) {
+    detail::domain_error(function, "a", a,
+                         "0 < a <= b1/2 = " + detail::format(w.b1 / 2) + " (printed eq. 19/20)");
   }
   zone_ = zone_angles(a, w.b1);
   waviness_load_ = wavecontact::load(w, a);  // the printed eq. 13 has the same load (derive/)
@@ -200,7 +205,7 @@ double roughness_full_contact_pressure(const TwoScaleParams& params, double x) {
   return generated::roughness_full_contact_pressure(w.E, params.roughness.H2, w.b1, n, Cnx);
 }
 
-std::vector<double> two_scale_half_widths(const TwoScaleParams& params, double P) {
+std::vector<Equilibrium> two_scale_half_widths(const TwoScaleParams& params, double P) {
   constexpr const char* function = "wavecontact::two_scale_half_widths";
   validate(params.waviness, function);
   validate(params.roughness, function);
@@ -212,18 +217,22 @@ std::vector<double> two_scale_half_widths(const TwoScaleParams& params, double P
     return load(params.waviness, a) +
            evaluator.load(params.waviness.E, params.roughness.H2, zone.Ca, zone.Sa) - P;
   };
-  const int intervals = 8 * params.roughness.n + 64;
-  std::vector<double> roots;
+  auto equilibrium = [&](double a, bool rising) {
+    return Equilibrium{a, rising, TwoScaleContact(params, a).admissible()};
+  };
+  // Brackets on (0, b1): the last one stops short of full contact.
+  const int intervals = 16 * params.roughness.n + 128;
+  std::vector<Equilibrium> roots;
   double lo = 0, f_lo = -P;
-  for (int i = 1; i <= intervals; ++i) {
-    const double hi = b1 / 2 * i / intervals, f_hi = residual(hi);
+  for (int i = 1; i < intervals; ++i) {
+    const double hi = b1 * i / intervals, f_hi = residual(hi);
     if (f_hi == 0) {
-      roots.push_back(hi);
+      roots.push_back(equilibrium(hi, f_lo < 0));
     } else if ((f_lo < 0) != (f_hi < 0) && f_lo != 0) {
       std::uintmax_t iterations = 200;
       const auto [left, right] = boost::math::tools::toms748_solve(
           residual, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(), iterations);
-      roots.push_back(left + (right - left) / 2);
+      roots.push_back(equilibrium(left + (right - left) / 2, f_lo < 0));
     }
     lo = hi, f_lo = f_hi;
   }

@@ -5,8 +5,11 @@
 #include <limits>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/cos_pi.hpp>
+#include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/tools/roots.hpp>
 
+#include "periodic_regime.hpp"
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "waviness.hpp"  // generated/
@@ -17,13 +20,26 @@ namespace {
 
 constexpr double pi = boost::math::double_constants::pi;
 
-// The closed forms hold while the zone stays on the top half of each asperity.
-void require_half_width(const char* function, const WavinessParams& p, double a) {
-  if (!(std::isfinite(a) && a > 0 && a <= p.b1 / 2)) {
+// One zone per period: 0 < a < b1 (a = b1 allowed where `full_contact_allowed`, the limit
+// of full contact). The printed formulas beyond b1/2 are the analytic branch of eq. 2,
+// defined while 1 + m cos(pi a/b1) > 0.
+void require_half_width(const char* function, const WavinessParams& p, double a, Form form,
+                        bool full_contact_allowed = false) {
+  const bool inside = full_contact_allowed ? a <= p.b1 : a < p.b1;
+  if (!(std::isfinite(a) && a > 0 && inside)) {
     detail::domain_error(function, "a", a,
-                         "0 < a <= b1/2 = " + detail::format(p.b1 / 2) +
-                             " (closed form for one zone per period on the asperity's top half)");
+                         std::string("0 < a ") + (full_contact_allowed ? "<=" : "<") +
+                             " b1 = " + detail::format(p.b1) + " (one contact zone per period)");
   }
+  if (form == Form::paper && a > p.b1 / 2 && !(1 + p.m * zone_angles(a, p.b1).Ca > 0)) {
+    detail::domain_error(function, "a", a,
+                         "for the printed eq. 13/14, 1 + m cos(pi a/b1) > 0: beyond a = b1/2 they "
+                         "continue the top branch of eq. 2, which has a pole at cos(pi x/b1) = -1/m");
+  }
+}
+
+detail::HalfAngles half_angles(double x, double b1) {
+  return {boost::math::sin_pi(x / (2 * b1)), boost::math::cos_pi(x / (2 * b1))};
 }
 
 double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x,
@@ -31,6 +47,10 @@ double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, do
   const double r = std::fabs(reduce_to_period(x, p.b1));
   if (r >= a) return 0;
   const PointAngles point = point_angles(r, a, p.b1);
+  if (form == Form::exact && a > p.b1 / 2) {
+    return pi / p.b1 * p.E * p.H1 *
+           detail::periodic_pressure(p.m, half_angles(a, p.b1), half_angles(r, p.b1), point.D);
+  }
   return form == Form::exact
              ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa,
                                                   point.Cx, point.Sx, point.D)
@@ -38,12 +58,17 @@ double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, do
                                                   point.Cx, point.Sx, point.D);
 }
 
+// Beyond b1/2 the exact form needs the quadrature; the printed one continues its closed form.
+bool periodic_quadrature(const WavinessParams& p, double a, Form form) {
+  return form == Form::exact && a > p.b1 / 2;
+}
+
 }  // namespace
 
 double pressure(const WavinessParams& params, double a, double x, Form form) {
   constexpr const char* function = "wavecontact::pressure";
   validate(params, function);
-  require_half_width(function, params, a);
+  require_half_width(function, params, a, form);
   detail::require_finite(function, "x", x);
   return pressure_at(params, a, zone_angles(a, params.b1), x, form);
 }
@@ -52,7 +77,7 @@ Eigen::ArrayXd pressure(const WavinessParams& params, double a,
                         const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
   constexpr const char* function = "wavecontact::pressure";
   validate(params, function);
-  require_half_width(function, params, a);
+  require_half_width(function, params, a, form);
   const ZoneAngles zone = zone_angles(a, params.b1);
   Eigen::ArrayXd p(x.size());
   for (Eigen::Index i = 0; i < x.size(); ++i) {
@@ -62,20 +87,37 @@ Eigen::ArrayXd pressure(const WavinessParams& params, double a,
   return p;
 }
 
-double pa_over_pstar(const WavinessParams& params, double a) {
+double pa_over_pstar(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::pa_over_pstar";
   validate(params, function);
-  require_half_width(function, params, a);
+  require_half_width(function, params, a, form, true);
+  if (periodic_quadrature(params, a, form)) {
+    return detail::periodic_load(params.m, boost::math::sin_pi(a / (2 * params.b1))) / pi;
+  }
   const ZoneAngles zone = zone_angles(a, params.b1);
   return generated::waviness_pa_over_pstar(params.m, zone.Ca, zone.Sa);
 }
 
-double load(const WavinessParams& params, double a) {
+double load(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::load";
   validate(params, function);
-  require_half_width(function, params, a);
+  require_half_width(function, params, a, form, true);
+  if (periodic_quadrature(params, a, form)) {
+    return params.E * params.H1 *
+           detail::periodic_load(params.m, boost::math::sin_pi(a / (2 * params.b1)));
+  }
   const ZoneAngles zone = zone_angles(a, params.b1);
   return generated::waviness_load(params.E, params.H1, params.m, zone.Ca, zone.Sa);
+}
+
+double load_slope(const WavinessParams& params, double a) {
+  constexpr const char* function = "wavecontact::load_slope";
+  validate(params, function);
+  require_half_width(function, params, a, Form::exact, true);
+  const double angle = a / (2 * params.b1);  // s = sin(pi angle), ds/da = pi cos(pi angle)/(2 b1)
+  return params.E * params.H1 *
+         detail::periodic_load_slope(params.m, boost::math::sin_pi(angle)) * pi *
+         boost::math::cos_pi(angle) / (2 * params.b1);
 }
 
 double pstar(const WavinessParams& params) {
@@ -90,24 +132,25 @@ double mean_pressure(const WavinessParams& params, double a) {
 double contact_fraction(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::contact_fraction";
   validate(params, function);
-  require_half_width(function, params, a);
+  require_half_width(function, params, a, Form::exact, true);
   return a / params.b1;
 }
 
-double contact_half_width_for_pa_over_pstar(const WavinessParams& params, double ratio) {
-  constexpr const char* function = "wavecontact::contact_half_width_for_pa_over_pstar";
+double single_asperity_half_width(const WavinessParams& params, double P) {
+  constexpr const char* function = "wavecontact::single_asperity_half_width";
   validate(params, function);
-  // pa/p* grows monotonically from 0 at a = 0 to its maximum at a = b1/2; r = a/b1.
+  // pa/p* grows monotonically from 0 at a = 0 to its value at a = b1/2; r = a/b1.
   auto ratio_at = [&](double r) {
     const ZoneAngles zone = zone_angles(r, 1.0);
     return generated::waviness_pa_over_pstar(params.m, zone.Ca, zone.Sa);
   };
-  const double maximum = ratio_at(0.5);
+  const double ratio = P / (pi * params.E * params.H1), maximum = ratio_at(0.5);
   // A few ulp of slack, so that the value computed at a = b1/2 maps back to b1/2.
   const double slack = 8 * std::numeric_limits<double>::epsilon() * maximum;
   if (!(std::isfinite(ratio) && ratio > 0 && ratio <= maximum + slack)) {
-    detail::domain_error(function, "pa/p*", ratio,
-                         "0 < pa/p* <= " + detail::format(maximum) + " (the value at a = b1/2)");
+    detail::domain_error(function, "P", P,
+                         "0 < P <= " + detail::format(maximum * pi * params.E * params.H1) +
+                             " (the load at a = b1/2)");
   }
   if (ratio >= maximum) return params.b1 / 2;
   std::uintmax_t iterations = 200;
@@ -115,18 +158,6 @@ double contact_half_width_for_pa_over_pstar(const WavinessParams& params, double
       [&](double r) { return ratio_at(r) - ratio; }, 0.0, 0.5, -ratio, maximum - ratio,
       boost::math::tools::eps_tolerance<double>(), iterations);
   return params.b1 * (lo + (hi - lo) / 2);
-}
-
-double contact_half_width(const WavinessParams& params, double P) {
-  constexpr const char* function = "wavecontact::contact_half_width";
-  validate(params, function);
-  detail::require_positive(function, "P", P);
-  const double maximum = load(params, params.b1 / 2);
-  if (P > maximum * (1 + 8 * std::numeric_limits<double>::epsilon())) {
-    detail::domain_error(function, "P", P,
-                         "0 < P <= " + detail::format(maximum) + " (the load at a = b1/2)");
-  }
-  return contact_half_width_for_pa_over_pstar(params, P / (pi * params.E * params.H1));
 }
 
 double wave_curve(const WavinessParams& params, double x) {

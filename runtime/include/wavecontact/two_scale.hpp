@@ -1,5 +1,5 @@
 // The two-scale profile (eq. 1): the parametric wave curve plus the roughness harmonic
-// r(x) = H2 cos(n pi x/b1), n even (eq. 3), one contact zone |x| <= a <= b1/2 per period,
+// r(x) = H2 cos(n pi x/b1), n even (eq. 3), one contact zone |x| <= a < b1 per period,
 // superposed (eq. 21).
 //
 // The roughness pressure is the exact solution of eq. 17 in its Legendre-Dirichlet form
@@ -19,6 +19,7 @@
 
 #include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
+#include "wavecontact/stability.hpp"
 
 namespace wavecontact {
 
@@ -57,7 +58,8 @@ std::vector<int> available_roughness_n();
 // as integers (or p/q). Any even n, 2 <= n <= max_roughness_n.
 std::vector<std::string> expansion_coefficients(int n);
 
-// One contact zone of half-width a, 0 < a <= b1/2. Construction costs O(n^2) for the
+// One contact zone of half-width a: 0 < a < b1 for the exact form, 0 < a <= b1/2 for the
+// printed one (eq. 19/20 is stated for that range). Construction costs O(n^2) for the
 // admissibility scan; each pressure costs O(n).
 class TwoScaleContact {
  public:
@@ -95,10 +97,11 @@ class TwoScaleContact {
 // p_rf(x) = p*_r (cos(n pi x/b1) + 1), p*_r = pi E* H2 n/(2 b1).
 double roughness_full_contact_pressure(const TwoScaleParams& params, double x);
 
-// Every half-width a in (0, b1/2] at which the two-scale load (exact form) equals P, in
-// increasing order (the load need not be monotone when H2 n is large). Found by
-// bracketing on 8 n + 64 intervals and TOMS 748 in each.
-std::vector<double> two_scale_half_widths(const TwoScaleParams& params, double P);
+// Every half-width a in (0, b1) at which the two-scale load (exact form) equals P, in
+// increasing order (the load need not be monotone when H2 n is large, nor beyond b1/2),
+// each with its stability (the load rises through P) and admissibility. Found by
+// bracketing on 16 n + 128 intervals and TOMS 748 in each.
+std::vector<Equilibrium> two_scale_half_widths(const TwoScaleParams& params, double P);
 
 void validate(const RoughnessParams& params, const char* function);
 

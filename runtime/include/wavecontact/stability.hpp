@@ -1,0 +1,70 @@
+// Which single-zone solutions of the wave curve are physical and stable, over the whole
+// range 0 < a < b1 (MATH.md fact 8):
+// - admissible: the pressure is >= 0 everywhere in the zone; beyond b1/2 the exact solution
+//   can turn negative on the lower flank (the contact would separate there);
+// - stable: dP/da > 0. For m >= 2 the load is not monotone in a: where dP/da < 0 the
+//   equilibrium is unstable and the zone snaps through to a stable one.
+#pragma once
+
+#include <vector>
+
+#include "wavecontact/parameters.hpp"
+
+namespace wavecontact {
+
+struct HalfWidthRange {
+  double begin, end;  // [length], begin < end
+};
+
+struct Admissibility {
+  bool admissible;
+  double most_negative_x;         // where the pressure is lowest (0 if it is >= 0 everywhere)
+  double most_negative_pressure;  // that pressure if negative, else 0
+};
+
+// The exact pressure of the zone of half-width a, 0 < a < b1, scanned on 128 evenly spaced
+// points, 32 between x = b1/2 and a (where it can turn negative) and 10 approaching the edge;
+// a pressure below -64 eps p* counts as negative.
+Admissibility admissibility(const WavinessParams& params, double a);
+
+struct Equilibrium {
+  double a;  // contact half-width [length]
+  bool stable;
+  bool admissible;
+};
+
+// The load P(a) of one profile over 0 < a <= b1: its turning points (dP/da = 0) are
+// located once at construction (a scan of dP/da on 256 points, a Brent search of every
+// local minimum of dP/da, TOMS 748 for the roots), so that equilibria() is cheap.
+class LoadCurve {
+ public:
+  explicit LoadCurve(const WavinessParams& params);
+
+  // The ranges of a where dP/da < 0 (snap-through), in increasing order.
+  const std::vector<HalfWidthRange>& unstable_ranges() const { return unstable_; }
+
+  // The largest load any single zone carries, and P at the onset of full contact (a = b1).
+  double maximum_load() const { return maximum_load_; }
+  double full_contact_load() const { return full_contact_load_; }
+
+  // Every a in (0, b1) carrying P, in increasing order, each with its stability and
+  // admissibility; empty if P > maximum_load().
+  std::vector<Equilibrium> equilibria(double P) const;
+
+ private:
+  WavinessParams params_;
+  std::vector<double> turning_points_;  // 0, every a with dP/da = 0, b1
+  std::vector<double> turning_loads_;   // P there
+  std::vector<HalfWidthRange> unstable_;
+  double maximum_load_ = 0, full_contact_load_ = 0;
+};
+
+// The one half-width carrying P. Throws std::domain_error if P exceeds every single-zone
+// load (full contact), or if several half-widths carry it (listing them: use
+// LoadCurve::equilibria()).
+double contact_half_width(const WavinessParams& params, double P);
+
+// The same for pa/p* = P / (pi E* H1).
+double contact_half_width_for_pa_over_pstar(const WavinessParams& params, double ratio);
+
+}  // namespace wavecontact

@@ -1,0 +1,156 @@
+#include "wavecontact/stability.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/sin_pi.hpp>
+#include <boost/math/tools/minima.hpp>
+#include <boost/math/tools/roots.hpp>
+
+#include "periodic_regime.hpp"
+#include "validate.hpp"
+#include "wavecontact/waviness.hpp"
+
+namespace wavecontact {
+
+namespace {
+
+constexpr double pi = boost::math::double_constants::pi;
+constexpr double eps = std::numeric_limits<double>::epsilon();
+constexpr int slope_samples = 256;
+
+// A root of f in [lo, hi], where f(lo) and f(hi) differ in sign (TOMS 748 to full precision).
+template <typename F>
+double bracketed_root(const F& f, double lo, double hi, double f_lo, double f_hi) {
+  if (f_lo == 0) return lo;
+  if (f_hi == 0) return hi;
+  std::uintmax_t iterations = 200;
+  const auto [left, right] = boost::math::tools::toms748_solve(
+      f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(), iterations);
+  return left + (right - left) / 2;
+}
+
+}  // namespace
+
+Admissibility admissibility(const WavinessParams& params, double a) {
+  constexpr const char* function = "wavecontact::admissibility";
+  validate(params, function);
+  if (!(std::isfinite(a) && a > 0 && a < params.b1)) {
+    detail::domain_error(function, "a", a, "0 < a < b1 = " + detail::format(params.b1));
+  }
+  std::vector<double> xs;
+  for (int i = 0; i < 128; ++i) xs.push_back(a * i / 128);
+  const double kink = params.b1 / 2;
+  if (a > kink) {
+    for (int i = 0; i < 32; ++i) xs.push_back(kink + (a - kink) * i / 32);
+  }
+  for (int k = 1; k <= 10; ++k) xs.push_back(a * (1 - std::ldexp(1.0, -2 * k)));
+  Admissibility result{true, 0, 0};
+  for (double x : xs) {
+    const double p = pressure(params, a, x);
+    if (p < result.most_negative_pressure) result.most_negative_pressure = p, result.most_negative_x = x;
+  }
+  result.admissible = !(result.most_negative_pressure < -64 * eps * pstar(params));
+  return result;
+}
+
+LoadCurve::LoadCurve(const WavinessParams& params) : params_(params) {
+  validate(params, "wavecontact::LoadCurve");
+  // dP/da has the sign of dP/ds, s = sin(pi r/2), r = a/b1 in (0, 1]; dP/ds does not
+  // vanish at r = 1 as dP/da does, through ds/da.
+  auto slope = [&](double r) {
+    return detail::periodic_load_slope(params.m, boost::math::sin_pi(r / 2));
+  };
+  std::vector<double> r(slope_samples + 1), f(slope_samples + 1);
+  for (int i = 0; i <= slope_samples; ++i) {
+    r[i] = static_cast<double>(i) / slope_samples;
+    f[i] = i == 0 ? 0 : slope(r[i]);
+  }
+  std::vector<double> roots;
+  for (int i = 1; i < slope_samples; ++i) {
+    if ((f[i] < 0) != (f[i + 1] < 0)) {
+      roots.push_back(bracketed_root(slope, r[i], r[i + 1], f[i], f[i + 1]));
+    } else if (f[i] > 0 && i + 1 < slope_samples && f[i] <= f[i - 1] && f[i] <= f[i + 1]) {
+      // A positive local minimum on the grid may hide a short dip below zero.
+      const auto [r_min, f_min] =
+          boost::math::tools::brent_find_minima(slope, r[i - 1], r[i + 1], 52);
+      if (f_min < 0) {
+        roots.push_back(bracketed_root(slope, r[i - 1], r_min, f[i - 1], f_min));
+        roots.push_back(bracketed_root(slope, r_min, r[i + 1], f_min, f[i + 1]));
+      }
+    }
+  }
+  std::sort(roots.begin(), roots.end());
+  turning_points_.push_back(0);
+  for (double root : roots) turning_points_.push_back(root * params.b1);
+  turning_points_.push_back(params.b1);
+  for (double a : turning_points_) turning_loads_.push_back(a > 0 ? load(params, a) : 0);
+  for (std::size_t i = 1; i < turning_points_.size(); ++i) {
+    if (turning_loads_[i] < turning_loads_[i - 1]) {
+      unstable_.push_back({turning_points_[i - 1], turning_points_[i]});
+    }
+  }
+  maximum_load_ = *std::max_element(turning_loads_.begin(), turning_loads_.end());
+  full_contact_load_ = turning_loads_.back();
+}
+
+std::vector<Equilibrium> LoadCurve::equilibria(double P) const {
+  detail::require_positive("wavecontact::LoadCurve::equilibria", "P", P);
+  const double half = params_.b1 / 2, half_load = load(params_, half);
+  std::vector<Equilibrium> result;
+  for (std::size_t i = 1; i < turning_points_.size(); ++i) {
+    const double lo = turning_points_[i - 1], hi = turning_points_[i];
+    const double f_lo = turning_loads_[i - 1] - P, f_hi = turning_loads_[i] - P;
+    if ((f_lo > 0 && f_hi > 0) || (f_lo < 0 && f_hi < 0) || f_lo == f_hi) continue;
+    double a;
+    if (lo == 0 && P <= half_load) {
+      // P(a) rises on (0, b1/2] (the first turning point lies beyond): the closed form.
+      a = single_asperity_half_width(params_, P);
+    } else {
+      const double from = lo == 0 ? half : lo, f_from = lo == 0 ? half_load - P : f_lo;
+      a = bracketed_root([&](double x) { return load(params_, x) - P; }, from, hi, f_from, f_hi);
+    }
+    if (a <= 0 || a >= params_.b1) continue;
+    if (!result.empty() && result.back().a == a) continue;  // P at a turning point
+    result.push_back({a, f_hi > f_lo, admissibility(params_, a).admissible});
+  }
+  return result;
+}
+
+double contact_half_width(const WavinessParams& params, double P) {
+  constexpr const char* function = "wavecontact::contact_half_width";
+  validate(params, function);
+  detail::require_positive(function, "P", P);
+  const LoadCurve curve(params);
+  const std::vector<Equilibrium> solutions = curve.equilibria(P);
+  if (solutions.empty()) {
+    detail::domain_error(function, "P", P,
+                         "0 < P <= " + detail::format(curve.maximum_load()) +
+                             ", the largest load of one contact zone per period (beyond it the "
+                             "contact is full)");
+  }
+  if (solutions.size() > 1) {
+    std::string list;
+    for (const Equilibrium& e : solutions) {
+      list += (list.empty() ? "" : ", ") + detail::format(e.a) +
+              (e.stable ? " (stable)" : " (unstable)");
+    }
+    detail::domain_error(function, "P", P,
+                         "a load carried by one half-width only; this one is carried by a = " +
+                             list + ": use wavecontact::LoadCurve::equilibria()");
+  }
+  return solutions.front().a;
+}
+
+double contact_half_width_for_pa_over_pstar(const WavinessParams& params, double ratio) {
+  constexpr const char* function = "wavecontact::contact_half_width_for_pa_over_pstar";
+  validate(params, function);
+  detail::require_positive(function, "pa/p*", ratio);
+  return contact_half_width(params, ratio * pi * params.E * params.H1);
+}
+
+}  // namespace wavecontact
