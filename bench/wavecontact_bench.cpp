@@ -14,6 +14,7 @@
 #include "waviness_csrc.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
+#include "wavecontact/stability.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
@@ -144,14 +145,32 @@ void BM_load(benchmark::State& state) {
 }
 BENCHMARK(BM_load);
 
-void BM_contact_half_width(benchmark::State& state) {
+// a(P) in the single-asperity regime (a <= b1/2): the closed-form inverse.
+void BM_single_asperity_half_width(benchmark::State& state) {
   double P = 0.05;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(contact_half_width(waviness, P));
+    benchmark::DoNotOptimize(single_asperity_half_width(waviness, P));
     P = P < 1.5 ? P + 0.01 : 0.05;
   }
 }
-BENCHMARK(BM_contact_half_width);
+BENCHMARK(BM_single_asperity_half_width);
+
+// Every zone carrying P over 0 < a < b1, given the turning points of P(a) (LoadCurve).
+void BM_equilibria(benchmark::State& state) {
+  const LoadCurve curve(waviness);
+  double P = 0.05;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(curve.equilibria(P));
+    P = P < 1.5 ? P + 0.01 : 0.05;
+  }
+}
+BENCHMARK(BM_equilibria)->Unit(benchmark::kMicrosecond);
+
+// The turning points of P(a) over 0 < a <= b1.
+void BM_load_curve(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(LoadCurve(waviness));
+}
+BENCHMARK(BM_load_curve)->Unit(benchmark::kMillisecond);
 
 void BM_pa_over_pstar_curve_1000(benchmark::State& state) {
   for (auto _ : state) {

@@ -46,7 +46,9 @@ for label, measure, ours_name, baselines in rows:
             print(f"{label:40} {'n/a':>12} {baseline_label:>24} {'n/a':>12}")
             continue
         print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
-for label, name in (("load P(a), ns/call", "BM_load"), ("inverse a(P), ns/call", "BM_contact_half_width"),
+for label, name in (("load P(a), ns/call", "BM_load"), ("inverse a(P) for a <= b1/2, ns/call", "BM_single_asperity_half_width"),
+                    ("all zones for P, given LoadCurve, ns", "BM_equilibria"),
+                    ("LoadCurve (turning points of P(a)), ns", "BM_load_curve"),
                     ("pa/p* curve of 1000 points, ns", "BM_pa_over_pstar_curve_1000"),
                     ("k_1..k_1024, ns", "BM_kcoefficients/1024"),
                     ("full regeneration of generated/, ns", "BM_regenerate_default/iterations:1")):

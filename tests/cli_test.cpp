@@ -186,13 +186,15 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
   fs::remove_all(out);
   const Result r = run("reproduce --out '" + out.string() + "'");
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
-  for (const char* figure : {"fig1", "fig2", "fig4", "fig5", "fig6", "fig7", "fig8"}) {
+  for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8"}) {
     for (const char* extension : {".csv", ".png"}) {
       const fs::path file = out / (std::string(figure) + extension);
       BOOST_TEST(fs::exists(file), file);
       BOOST_TEST((fs::exists(file) && fs::file_size(file) > 100), file);
     }
   }
+  const fs::path report = out / "REPORT.md";
+  BOOST_TEST((fs::exists(report) && fs::file_size(report) > 1000), report);
   fs::remove_all(out);
 }
 

@@ -200,6 +200,10 @@ BOOST_AUTO_TEST_CASE(snap_through_range_and_every_equilibrium) {
     BOOST_TEST(wavecontact::load_slope(p, range.begin * (1 - 1e-6)) > 0);
     BOOST_TEST(wavecontact::load_slope(p, range.begin * (1 + 1e-6)) < 0);
     BOOST_TEST(curve.maximum_load() == wavecontact::load(p, range.begin), tt::tolerance(1e-14));
+    // The pressure turns negative where the load peaks (REPORT.md): stable zones are
+    // admissible, unstable ones are not.
+    BOOST_TEST(wavecontact::admissibility(p, range.begin * (1 - 1e-3)).admissible);
+    BOOST_TEST(!wavecontact::admissibility(p, range.begin * (1 + 1e-3)).admissible);
     // A load between full contact and the peak: a stable zone below the peak, an unstable
     // one beyond it, each carrying P.
     const double P = (curve.full_contact_load() + curve.maximum_load()) / 2;

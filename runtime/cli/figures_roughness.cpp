@@ -43,7 +43,7 @@ Figure two_scale_profiles() {
     csv << number(x) << "," << number(wave_curve({H1, b1, 0, E}, x) + r) << ","
         << number(wave_curve({H1, b1, 10, E}, x) + r) << "\n";
   }
-  return {"fig2", csv.str(),
+  return {"fig2", "Fig. 2: two-scale profile, H2 = 0.05 mm, n = 16, m = 0 and 10", csv.str(),
           "set title 'Fig. 2: two-scale profile, H1 = 1 mm, b1 = 10 mm, H2 = 0.05 mm, n = 16'\n"
           "set xlabel 'x [mm]'\nset ylabel 'y [mm]'\nset key outside right\n" +
               plot({curve("fig2.csv", "", "1:2", 1, true, "m = 0"),
@@ -67,7 +67,7 @@ Figure roughness_integrand() {
     curves.push_back(curve("fig4.csv", "", "1:" + std::to_string(k + 2), static_cast<int>(k + 1),
                            true, "n = " + std::to_string(ns[k])));
   }
-  return {"fig4", csv.str(),
+  return {"fig4", "Fig. 4: s(v), the integrand of eq. 17, for n = 8, 16, 32", csv.str(),
           "set title 'Fig. 4: s(v) = sin(n x)/n, v = tan(x/2) (eq. 17)'\n"
           "set xlabel 'v'\nset ylabel 's(v)'\nset key outside right\n" + plot(curves)};
 }
@@ -134,7 +134,7 @@ Figure centre_pressure() {
         curve("fig7.csv", rows, "3:6", colour + 1, true, m + ", single-scale, exact"),
         curve("fig7.csv", rows, "3:7", colour + 1, false, m + ", single-scale, printed")};
   });
-  return {"fig7", csv.str(), script};
+  return {"fig7", "Fig. 7: p(0) against 2a/L1, two-scale (H2 = 0.15 mm) against single-scale, n = 8 and 16, m = 0 and 10", csv.str(), script};
 }
 
 // Fig. 8: contact area 2a/L1 against pa/p* on a <= b2, two-scale and single-scale.
@@ -165,7 +165,7 @@ Figure two_scale_contact_area() {
         curve("fig8.csv", rows, "5:3", colour, false, m + ", two-scale, printed"),
         curve("fig8.csv", rows, "6:3", colour + 1, true, m + ", single-scale")};
   });
-  return {"fig8", csv.str(), script};
+  return {"fig8", "Fig. 8: contact area against mean pressure, two-scale against single-scale, n = 8 and 16, m = 0 and 10", csv.str(), script};
 }
 
 }  // namespace wavecontact::cli

@@ -1,4 +1,5 @@
-// Figs. 1, 5a and 6 of the seed paper: the waviness alone.
+// Figs. 1, 5a, 5b and 6 of the seed paper: the waviness alone.
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <vector>
@@ -44,19 +45,21 @@ Figure wave_curves() {
     plot << (k ? ", " : "") << "'fig1.csv' skip 1 using 1:" << k + 2 << " with lines lw 2 title 'm = "
          << number(ms[k]) << "'";
   }
-  return {"fig1", csv.str(), plot.str() + "\n"};
+  return {"fig1", "Fig. 1: the parametric wave curve, m = 0.2, 2, 8, 35, 250", csv.str(), plot.str() + "\n"};
 }
 
-// Fig. 5a: pressure distributions, single-asperity regime (a <= b1/2), exact (solid)
-// against the printed eq. 14 (dashed).
-Figure pressure_distributions() {
+// Fig. 5: pressure distributions for several m, one panel per contact half-width, exact
+// (solid) against the printed eq. 14 (dashed; beyond b1/2 only where its continuation is
+// defined, 1 + m cos(pi a/b1) > 0).
+Figure pressure_distributions(const std::string& name, const std::string& caption,
+                              const std::string& title, const std::vector<double>& fractions,
+                              double clip) {
   const std::vector<double> ms{0, 0.2, 2, 10, 35};
-  const std::vector<double> fractions{0.25, 0.5};
   constexpr int samples = 201;
   std::ostringstream csv, plot;
   csv << "a_over_b1,m,x_mm,p_exact_over_E,p_paper_over_E\n";
-  plot << "set multiplot layout 1,2 title 'Fig. 5a: pressure for H1 = 1 mm, b1 = 10 mm "
-          "(solid: exact; dashed: printed eq. 14)'\n"
+  plot << "set multiplot layout 1," << fractions.size() << " title '" << title
+       << " H1 = 1 mm, b1 = 10 mm (solid: exact; dashed: printed eq. 14)'\n"
           "set xlabel 'x [mm]'\nset ylabel 'p / E*'\nset key top center font ',8'\n";
   int block = 0;
   for (double f : fractions) {
@@ -64,52 +67,84 @@ Figure pressure_distributions() {
     for (std::size_t k = 0; k < ms.size(); ++k, ++block) {
       const WavinessParams p{H1, b1, ms[k], E};
       const double a = f * b1;
+      const bool printed = f <= 0.5 || 1 + ms[k] * std::cos(M_PI * f) > 0;
       for (int i = 0; i < samples; ++i) {
         const double x = -a + 2 * a * i / (samples - 1.0);
         csv << number(f) << "," << number(ms[k]) << "," << number(x) << ","
             << number(pressure(p, a, x, Form::exact)) << ","
-            << number(pressure(p, a, x, Form::paper)) << "\n";
+            << (printed ? number(pressure(p, a, x, Form::paper)) : "NaN") << "\n";
       }
       const std::string rows = rows_of_block(block, samples);
       const std::string color = " lc " + std::to_string(k + 1);
-      curves.push_back("'fig5.csv' skip 1" + rows + " using 3:4 with lines lw 2" + color +
+      curves.push_back("'" + name + ".csv' skip 1" + rows + " using 3:4 with lines lw 2" + color +
                        " dt 1 title 'm = " + number(ms[k]) + " exact'");
-      if (ms[k] != 0) {  // identical at m = 0 (Westergaard)
-        curves.push_back("'fig5.csv' skip 1" + rows + " using 3:5 with lines lw 1" + color +
-                         " dt 2 title 'm = " + number(ms[k]) + " printed'");
+      if (ms[k] != 0 && printed) {  // identical at m = 0 (Westergaard)
+        curves.push_back("'" + name + ".csv' skip 1" + rows + " using 3:5 with lines lw 1" +
+                         color + " dt 2 title 'm = " + number(ms[k]) + " printed'");
       }
     }
-    // The printed eq. 14 has tall edge peaks for large m; clip them at a = b1/2.
-    plot << "set title 'a = " << number(f) << " b1'\nset yrange [0:" << (f < 0.4 ? "*" : "3.5")
-         << "]\nplot ";
+    // The printed eq. 14 has tall edge peaks for large m: clip them.
+    plot << "set title 'a = " << number(f) << " b1'\nset yrange [" << (f > 0.5 ? "*" : "0") << ":"
+         << (f < 0.4 ? "*" : number(clip)) << "]\nplot ";
     for (std::size_t k = 0; k < curves.size(); ++k) plot << (k ? ", \\\n  " : "") << curves[k];
-    plot << "\n";
+    plot << (f > 0.5 ? ", 0 with lines lc 'black' dt 3 notitle" : "") << "\n";
   }
   plot << "unset multiplot\n";
-  return {"fig5", csv.str(), plot.str()};
+  return {name, caption, csv.str(), plot.str()};
 }
 
-// Fig. 6: contact length against mean pressure (a <= b1/2). The printed eq. 14
-// integrates to the same load, so one curve per m.
+Figure single_asperity_pressure() {
+  return pressure_distributions(
+      "fig5a", "Fig. 5a: pressure, single-asperity regime (a = 0.25 b1 and 0.5 b1), exact and printed",
+      "Fig. 5a: single-asperity regime,", {0.25, 0.5}, 3.5);
+}
+
+Figure periodic_pressure() {
+  return pressure_distributions(
+      "fig5b",
+      "Fig. 5b: pressure, periodic regime (a = 0.75 b1 and 0.95 b1); negative where the single "
+      "zone is not admissible",
+      "Fig. 5b: periodic regime (p < 0: no single zone; the contact separates),",
+      {0.75, 0.95}, 3.5);
+}
+
+// Fig. 6: contact length against mean pressure, a up to full contact. The printed eq. 14
+// integrates to the exact load up to b1/2; beyond, its continuation (dashed) is drawn while
+// it is finite. Where dP/da < 0 (snap-through) the exact curve is drawn thin.
 Figure contact_length() {
   const std::vector<double> ms{0, 0.2, 2, 10, 35};
+  constexpr int samples = 400;
   std::ostringstream csv, plot;
-  csv << "m,pa_over_pstar,contact_fraction\n";
+  csv << "m,contact_fraction,pa_over_pstar,pa_over_pstar_printed,stable\n";
   for (double m : ms) {
     const WavinessParams p{H1, b1, m, E};
-    for (int i = 1; i <= 200; ++i) {
-      const double a = b1 / 2 * i / 200.0;
-      csv << number(m) << "," << number(pa_over_pstar(p, a)) << ","
-          << number(contact_fraction(p, a)) << "\n";
+    for (int i = 1; i <= samples; ++i) {
+      const double a = b1 * i / samples;
+      const bool printed = 1 + m * std::cos(M_PI * a / b1) > 0.05;
+      csv << number(m) << "," << number(contact_fraction(p, a)) << ","
+          << number(pa_over_pstar(p, a)) << ","
+          << (printed ? number(pa_over_pstar(p, a, Form::paper)) : "NaN") << ","
+          << (load_slope(p, a) > 0 ? 1 : 0) << "\n";
     }
   }
-  plot << "set title 'Fig. 6: 2a/L1 against pa/p* (exact; printed eq. 14 gives the same load)'\n"
-          "set xlabel 'pa / p*'\nset ylabel '2a / L1'\nset key bottom right\nplot ";
+  plot << "set title 'Fig. 6: 2a/L1 against pa/p*, H1 = 1 mm, b1 = 10 mm (solid: exact, thin where "
+          "dP/da < 0; dashed: printed eq. 14 continued beyond a = b1/2)'\n"
+          "set xlabel 'pa / p*'\nset ylabel '2a / L1'\nset key bottom right\n"
+          "set xrange [0:4]\nset yrange [0:1]\nplot ";
   for (std::size_t k = 0; k < ms.size(); ++k) {
-    plot << (k ? ", " : "") << "'fig6.csv' skip 1" << rows_of_block(static_cast<int>(k), 200)
-         << " using 2:3 with lines lw 2 title 'm = " << number(ms[k]) << "'";
+    const std::string rows = rows_of_block(static_cast<int>(k), samples);
+    const std::string color = " lc " + std::to_string(k + 1);
+    plot << (k ? ", \\\n  " : "") << "'fig6.csv' skip 1" << rows
+         << " using ($5 == 1 ? $3 : NaN):2 with lines lw 2" << color << " title 'm = "
+         << number(ms[k]) << " exact', "
+         << "'fig6.csv' skip 1" << rows << " using ($5 == 0 ? $3 : NaN):2 with lines lw 1" << color
+         << " notitle";
+    if (ms[k] != 0) {
+      plot << ", 'fig6.csv' skip 1" << rows << " using 4:2 with lines lw 1 dt 2" << color
+           << " title 'm = " << number(ms[k]) << " printed'";
+    }
   }
-  return {"fig6", csv.str(), plot.str() + "\n"};
+  return {"fig6", "Fig. 6: 2a/L1 against pa/p*, a from 0 to full contact (snap-through for m above about 0.7: see the table)", csv.str(), plot.str() + "\n"};
 }
 
 }  // namespace wavecontact::cli

@@ -27,8 +27,10 @@ void write(const fs::path& path, const std::string& contents) {
 void reproduce(const std::string& out_dir, std::ostream& log) {
   const fs::path dir(out_dir);
   fs::create_directories(dir);
-  for (const Figure& figure : {wave_curves(), two_scale_profiles(), roughness_integrand(), pressure_distributions(),
-                               contact_length(), centre_pressure(), two_scale_contact_area()}) {
+  const std::vector<Figure> figures{wave_curves(), two_scale_profiles(), roughness_integrand(), single_asperity_pressure(),
+                               periodic_pressure(),
+                               contact_length(), centre_pressure(), two_scale_contact_area()};
+  for (const Figure& figure : figures) {
     write(dir / (figure.name + ".csv"), figure.csv);
     write(dir / (figure.name + ".gp"),
           "set terminal pngcairo size 1100,650 font 'DejaVu Sans,10'\nset output '" +
@@ -41,6 +43,8 @@ void reproduce(const std::string& out_dir, std::ostream& log) {
     }
     log << "wrote " << (dir / (figure.name + ".png")).string() << "\n";
   }
+  write(dir / "REPORT.md", discrepancy_report(figures));
+  log << "wrote " << (dir / "REPORT.md").string() << "\n";
 }
 
 }  // namespace wavecontact::cli
