@@ -11,6 +11,7 @@
 
 #include "generate.hpp"   // derive/
 #include "roughness.hpp"  // derive/
+#include "waviness.hpp"  // generated/
 #include "waviness_csrc.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
@@ -54,13 +55,35 @@ int nodes_for_accuracy(const Rhs& rhs, const Closed& closed, double a, double b1
 
 void BM_waviness_pressure_generated(benchmark::State& state) {
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
+  Eigen::ArrayXd p(xs.size());  // the caller's buffer: no allocation in the loop
   for (auto _ : state) {
-    Eigen::ArrayXd p = pressure(waviness, half_width, xs);
+    pressure(waviness, half_width, xs, p);
     benchmark::DoNotOptimize(p.data());
   }
   state.SetItemsProcessed(state.iterations() * xs.size());
 }
 BENCHMARK(BM_waviness_pressure_generated)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+// The same generated formula, its atoms from scalar libm sin/cos, into the same buffer:
+// the "scalar libm" baseline for the vectorised kernel.
+void BM_waviness_pressure_scalar_libm(benchmark::State& state) {
+  const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
+  const ZoneAngles zone = zone_angles(half_width, waviness.b1);
+  const double a = half_width, b1 = waviness.b1;
+  Eigen::ArrayXd p(xs.size());
+  for (auto _ : state) {
+    for (Eigen::Index i = 0; i < xs.size(); ++i) {
+      const double r = std::fabs(xs[i]), half = std::sin(pi * r / (2 * b1));
+      const double D = 2 * std::sin(pi * (a + r) / (2 * b1)) * std::sin(pi * (a - r) / (2 * b1));
+      p[i] = r < a ? generated::waviness_pressure_exact(waviness.E, waviness.H1, b1, waviness.m, zone.Ca,
+                                                        zone.Sa, std::cos(pi * r / b1), 2 * half * half, D)
+                   : 0.0;
+    }
+    benchmark::DoNotOptimize(p.data());
+  }
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_waviness_pressure_scalar_libm)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_waviness_pressure_no_cse(benchmark::State& state) {
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);

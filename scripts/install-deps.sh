@@ -7,6 +7,7 @@ packages=(
   build-essential cmake pkg-config
   libginac-dev libcln-dev          # derive/: symbolic engine and exact arithmetic
   libeigen3-dev                    # runtime/: array API
+  libsleef-dev                     # runtime/: vectorised sinpi/cospi of the array kernels
   libboost-test-dev libboost-math-dev  # tests/ (Boost.Test), runtime/ (root finding, quadrature)
   libcli11-dev                     # the wavecontact CLI
   gnuplot-nox                      # reproduce: PNG plots

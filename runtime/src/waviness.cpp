@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
@@ -13,6 +14,7 @@
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "waviness.hpp"  // generated/
+#include "waviness_simd.hpp"
 
 namespace wavecontact {
 
@@ -73,19 +75,42 @@ double pressure(const WavinessParams& params, double a, double x, Form form) {
   return pressure_at(params, a, zone_angles(a, params.b1), x, form);
 }
 
-Eigen::ArrayXd pressure(const WavinessParams& params, double a,
-                        const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
+void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
+              Eigen::Ref<Eigen::ArrayXd> p, Form form) {
   constexpr const char* function = "wavecontact::pressure";
   validate(params, function);
   require_half_width(function, params, a, form);
-  const ZoneAngles zone = zone_angles(a, params.b1);
-  Eigen::ArrayXd p(x.size());
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    detail::require_finite(function, "x", x[i]);
-    p[i] = pressure_at(params, a, zone, x[i], form);
+  if (p.size() != x.size()) {
+    detail::domain_error(function, "p.size()", static_cast<double>(p.size()),
+                         "x.size() = " + std::to_string(x.size()));
   }
+  if (!x.allFinite()) {
+    for (Eigen::Index i = 0; i < x.size(); ++i) detail::require_finite(function, "x", x[i]);
+  }
+  const ZoneAngles zone = zone_angles(a, params.b1);
+  if (!periodic_quadrature(params, a, form) && detail::simd_pressure_available()) {
+    detail::simd_pressure({params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa}, form,
+                          x.data(), p.data(), static_cast<std::size_t>(x.size()));
+    return;
+  }
+  for (Eigen::Index i = 0; i < x.size(); ++i) p[i] = pressure_at(params, a, zone, x[i], form);
+}
+
+Eigen::ArrayXd pressure(const WavinessParams& params, double a,
+                        const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
+  Eigen::ArrayXd p(x.size());
+  pressure(params, a, x, p, form);
   return p;
 }
+
+namespace detail {
+
+bool simd_pressure_available() {
+  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return available;
+}
+
+}  // namespace detail
 
 double pa_over_pstar(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::pa_over_pstar";
