@@ -31,11 +31,12 @@ std::vector<std::pair<ex, int>> factor_list(const ex& e) {
   return list;
 }
 
-numeric value_at_sample(const ex& e) {
-  const ex value = atoms_in_v_variables(e).subs(sample_point_v()).evalf();
+numeric value_at_sample(const ex& e, const GiNaC::exmap& sample) {
+  const ex value = atoms_in_v_variables(e).subs(sample).evalf();
   if (!GiNaC::is_a<numeric>(value)) {
     std::ostringstream os;
-    os << "angle form: cannot evaluate " << e << " at the sample point";
+    os << "angle form: cannot evaluate " << e << " at the sample point (every parameter "
+          "needs a sample value)";
     throw std::logic_error(os.str());
   }
   return GiNaC::ex_to<numeric>(value);
@@ -105,6 +106,8 @@ namespace {
 // polynomial over Q that is positive on the domain (or an atom), keyed by its
 // canonical string: a deterministic factored form.
 struct Product {
+  explicit Product(const GiNaC::exmap& sample) : sample(sample) {}
+  const GiNaC::exmap& sample;
   numeric coefficient = 1;
   std::map<std::string, std::pair<ex, int>> factors;
 
@@ -120,7 +123,7 @@ struct Product {
       base = (atom / scale).normal();
     }
     base = base.expand();
-    if (value_at_sample(base).is_negative()) {
+    if (value_at_sample(base, sample).is_negative()) {
       base = (-base).expand();
       scale = -scale;
     }
@@ -153,7 +156,7 @@ struct Product {
 
 }  // namespace
 
-RootTerm to_angle_atoms(const RootTerm& term) {
+RootTerm to_angle_atoms(const RootTerm& term, const GiNaC::exmap& sample) {
   const ex s = sym::s(), alpha = sym::alpha();
   const ex Cx = sym::Cx(), Ca = sym::Ca();
   const GiNaC::lst to_angles{s == (1 - Cx) / (1 + Cx),
@@ -164,15 +167,17 @@ RootTerm to_angle_atoms(const RootTerm& term) {
     throw std::logic_error("angle form: substitution incomplete");
   }
 
-  Product root;
+  Product root(sample);
   root.multiply_factored(radicand);
   if (!root.coefficient.is_positive()) {
     std::ostringstream os;
-    os << "angle form: radicand " << radicand << " is not positive on the domain";
+    os << "angle form: radicand " << radicand
+       << " is not positive at the sample point (x^ = 0.4, a^ = 1.22 and the parameters' "
+          "sample values)";
     throw std::logic_error(os.str());
   }
   // Pull squares out of the root: sqrt(f^(2q + r)) = f^q sqrt(f^r), f > 0.
-  Product outside, inside;
+  Product outside(sample), inside(sample);
   outside.multiply_factored(rational);
   for (const auto& [key, factor] : root.factors) {
     const int q = factor.second / 2, r = factor.second % 2;
@@ -193,15 +198,15 @@ ex as_ex(const RootTerm& term) {
   return term.rational * GiNaC::sqrt(term.radicand);
 }
 
-ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form,
-                       bool& sign_agrees) {
+ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form, bool& sign_agrees,
+                       const GiNaC::exmap& sample) {
   const ex angle_rational = atoms_in_v_variables(angle_form.rational);
   const ex angle_radicand = atoms_in_v_variables(angle_form.radicand);
   const ex residual = (GiNaC::pow(v_form.rational, 2) * v_form.radicand -
                        GiNaC::pow(angle_rational, 2) * angle_radicand)
                           .normal();
-  const ex point_v = v_form.rational.subs(sample_point_v()).evalf();
-  const ex point_angle = angle_rational.subs(sample_point_v()).evalf();
+  const ex point_v = v_form.rational.subs(sample).evalf();
+  const ex point_angle = angle_rational.subs(sample).evalf();
   sign_agrees = GiNaC::is_a<numeric>(point_v) && GiNaC::is_a<numeric>(point_angle) &&
                 GiNaC::ex_to<numeric>(point_v).is_negative() ==
                     GiNaC::ex_to<numeric>(point_angle).is_negative();

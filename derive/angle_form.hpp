@@ -27,9 +27,14 @@ struct RootTerm {
 std::vector<RootTerm> root_terms(const RadicalSum& closed, const Radicals& radicals,
                                  const GiNaC::ex& prefactor_square = 1);
 
+// A point of the domain (0 < x^ < a^ < pi/2, m > 0, positive physical parameters) in
+// v-variables, used to fix signs of square roots.
+GiNaC::exmap sample_point_v();
+
 // One term in angle atoms: substituted, factored over Q, squares pulled out of the
-// root, factors (1 - Ca), (1 - Cx), (Cx - Ca) replaced by Sa, Sx, D.
-RootTerm to_angle_atoms(const RootTerm& term);
+// root, factors (1 - Ca), (1 - Cx), (Cx - Ca) replaced by Sa, Sx, D. Each factor is
+// oriented to be positive at `sample`, which must give every parameter a value.
+RootTerm to_angle_atoms(const RootTerm& term, const GiNaC::exmap& sample = sample_point_v());
 
 // The expression c * sqrt(r) of a term (sqrt omitted when r = 1).
 GiNaC::ex as_ex(const RootTerm& term);
@@ -39,13 +44,9 @@ GiNaC::ex as_ex(const RootTerm& term);
 // point of the domain. Returns the normal form of the difference of squares (zero when
 // equal) and sets sign_agrees.
 GiNaC::ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form,
-                              bool& sign_agrees);
+                              bool& sign_agrees, const GiNaC::exmap& sample = sample_point_v());
 
 // The atoms written back in u (via s) and alpha.
 GiNaC::ex atoms_in_v_variables(const GiNaC::ex& e);
-
-// A point of the domain (0 < x^ < a^ < pi/2, m > 0, positive physical parameters) in
-// v-variables, used to fix signs of square roots.
-GiNaC::exmap sample_point_v();
 
 }  // namespace wavecontact::derive

@@ -1,6 +1,5 @@
 #include "waviness.hpp"
 
-#include "block_keer.hpp"
 #include "hilbert.hpp"
 #include "symbols.hpp"
 
@@ -20,27 +19,9 @@ ex printed_eq13_rational() {
          (pow(m - m * s + s + 1, 2) * (m - m * alpha2 + alpha2 + 1));
 }
 
-namespace {
-
-std::vector<RootTerm> in_angles(const std::vector<RootTerm>& v_form) {
-  std::vector<RootTerm> angle;
-  for (const auto& term : v_form) angle.push_back(to_angle_atoms(term));
-  return angle;
-}
-
-std::vector<RootTerm> scaled(std::vector<RootTerm> terms, const ex& factor) {
-  for (auto& term : terms) term.rational = (term.rational * factor).normal();
-  return terms;
-}
-
-}  // namespace
-
 WavinessDerivation derive_waviness() {
   WavinessDerivation d;
-  d.profile = parametric_wave_curve();
-  d.g = hilbert_rhs(d.profile);
-  d.inversion = bounded_inversion(d.g, d.radicals);
-  d.load = load_integral(d.inversion, d.radicals);
+  static_cast<ClosedForms&>(d) = derive_closed_forms(parametric_wave_curve());
 
   // The printed eq. 13 carries 1/sqrt(alpha^2 + 1) = kappa(-1)/(alpha^2 + 1).
   const unsigned kappa_minus_one = d.radicals.index_of(-1);
@@ -49,17 +30,11 @@ WavinessDerivation derive_waviness() {
       (printed_eq13_rational() / (pow(sym::alpha(), 2) + 1)).normal());
   d.paper_load = load_integral(d.paper_inversion, d.radicals);
 
-  // Physical pressure p(x) = (pi/b1) p^(x^), p^ = sqrt(alpha^2 - u^2) * inversion.
   const ex edge = pow(sym::alpha(), 2) - sym::s();
-  const ex to_physical = GiNaC::Pi / sym::b1();
-  d.pressure_v = scaled(root_terms(d.inversion, d.radicals, edge), to_physical);
-  d.paper_pressure_v = scaled(root_terms(d.paper_inversion, d.radicals, edge), to_physical);
-  d.load_v = root_terms(d.load, d.radicals);
+  d.paper_pressure_v =
+      scaled(root_terms(d.paper_inversion, d.radicals, edge), GiNaC::Pi / sym::b1());
   d.pa_over_pstar_v = scaled(d.load_v, 1 / (GiNaC::Pi * sym::E() * sym::H1()));
-
-  d.pressure_angle = in_angles(d.pressure_v);
   d.paper_pressure_angle = in_angles(d.paper_pressure_v);
-  d.load_angle = in_angles(d.load_v);
   d.pa_over_pstar_angle = in_angles(d.pa_over_pstar_v);
   return d;
 }

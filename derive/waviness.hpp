@@ -6,23 +6,16 @@
 
 #include <ginac/ginac.h>
 
-#include "angle_form.hpp"
-#include "radicals.hpp"
+#include "closed_forms.hpp"
 
 namespace wavecontact::derive {
 
-struct WavinessDerivation {
-  Radicals radicals;
-  GiNaC::ex profile;        // y(x^) on the contact side, eq. 2 with b1 -> pi (eq. 8)
-  GiNaC::ex g;              // eq. 11: g(v) = -(E*/2) y'(x^(v))
-  RadicalSum inversion;     // exact eq. 13: p^(u) = sqrt(alpha^2 - u^2) * inversion(s)
+// The closed forms of eq. 2 on the contact side (b1 -> pi, eq. 8): inversion is the exact
+// eq. 13, pressure_angle the exact eq. 14.
+struct WavinessDerivation : ClosedForms {
   RadicalSum paper_inversion;  // printed eq. 13, same convention
-  RadicalSum load;          // exact eq. 6: P(alpha)
-  RadicalSum paper_load;    // eq. 6 applied to the printed eq. 13
-  // Angle (eq. 14) forms, in physical units: p(x) = (pi/b1) p^(x^).
-  std::vector<RootTerm> pressure_v, pressure_angle;
+  RadicalSum paper_load;       // eq. 6 applied to the printed eq. 13
   std::vector<RootTerm> paper_pressure_v, paper_pressure_angle;
-  std::vector<RootTerm> load_v, load_angle;
   // pa/p* = P / (pi E* H1), dimensionless.
   std::vector<RootTerm> pa_over_pstar_v, pa_over_pstar_angle;
 };

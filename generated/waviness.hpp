@@ -46,6 +46,16 @@ inline Scalar waviness_load(const Scalar& E, const Scalar& H1, const Scalar& m, 
   return (Sa * (H1 * (E * (_tmp0 * (sqrt(_tmp1 / _tmp0) * Scalar(1.5707963267948966)))))) / (_tmp1 * _tmp1);
 }
 
+// dP/dSa - dP/dCa of the load: dP/da = (pi/b1) sin(pi a/b1) times this (a <= b1/2).
+// Total ops: 23 (4 add, 16 mul, 2 div, 1 sqrt, 0 neg), 2 temporaries
+template <typename Scalar>
+inline Scalar waviness_load_slope_factor(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) + m;
+  const Scalar _tmp1 = Scalar(1.0) + (m * Ca);
+  return (((m * (Sa * (H1 * (E * Scalar(9.4247779607693793))))) + ((m * (H1 * (E * (Ca * Scalar(6.2831853071795862))))) + (H1 * (E * Scalar(6.2831853071795862))))) * (_tmp0 * (sqrt(_tmp1 / _tmp0) * Scalar((1.0/4.0))))) / (_tmp1 * (_tmp1 * _tmp1));
+}
+
 // Dimensionless mean pressure pa/p* = P/(pi E* H1), p* = pi E* H1/(2 b1).
 // Total ops: 10 (2 add, 5 mul, 2 div, 1 sqrt, 0 neg), 2 temporaries
 template <typename Scalar>

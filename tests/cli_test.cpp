@@ -238,3 +238,47 @@ BOOST_AUTO_TEST_CASE(negative_total_pressure_is_refused) {
   BOOST_TEST(r.err.find("p = -") != std::string::npos, r.err);
   BOOST_TEST(lines(r.err).size() == 1u);
 }
+
+// --profile-name: the generated example profiles through the command line. The two-harmonic
+// profile at H3 = 0 is Westergaard's sine, P = pi E* H1 sin^2(pi a/(2 b1)).
+BOOST_AUTO_TEST_CASE(user_profile_commands) {
+  const std::string sine = "--profile-name two_harmonic --param H1=0.5 --param H3=0 --b1 10 --E 2";
+  const Result load = run("load " + sine + " --a 3");
+  BOOST_TEST_REQUIRE(load.status == 0, load.err);
+  BOOST_TEST(lines(load.out)[0] == "a,P,pa,contact_fraction,load_slope");
+  const double expected = M_PI * 2 * 0.5 * std::pow(std::sin(M_PI * 3 / 20), 2);
+  BOOST_TEST(fields(lines(load.out)[1])[1] == expected, tt::tolerance(1e-14));
+
+  const Result solve = run("solve " + sine + " --P " + number(expected));
+  BOOST_TEST_REQUIRE(solve.status == 0, solve.err);
+  BOOST_TEST_REQUIRE(lines(solve.out).size() == 2u, solve.out);
+  BOOST_TEST(fields(lines(solve.out)[1])[1] == 3.0, tt::tolerance(1e-13));
+
+  const Result pressure = run("pressure " + sine + " --P " + number(expected) + " --x 0,1,5");
+  BOOST_TEST_REQUIRE(pressure.status == 0, pressure.err);
+  BOOST_TEST(lines(pressure.out).size() == 4u);
+  BOOST_TEST(fields(lines(pressure.out)[3])[1] == 0.0);  // outside the zone
+
+  // A dimpled top (H3 < -H1/9): a small zone would need p < 0 at x = 0.
+  const Result dimple =
+      run("pressure --profile-name two_harmonic --param H1=1 --param H3=-0.2 --b1 10 --E 1 --a 1 --x 0");
+  BOOST_TEST(dimple.status == 3);
+  BOOST_TEST(dimple.err.find("< 0 at x = 0") != std::string::npos, dimple.err);
+
+  // Refusals: exit 2, one line naming the problem.
+  const Result missing = run("load --profile-name two_harmonic --param H1=1 --b1 10 --E 1 --a 3");
+  BOOST_TEST(missing.status == 2);
+  BOOST_TEST(missing.err.find("needs the parameter \"H3\"") != std::string::npos, missing.err);
+  const Result unknown = run("load --profile-name circle --b1 10 --E 1 --a 3");
+  BOOST_TEST(unknown.status == 2);
+  BOOST_TEST(unknown.err.find("available: parametric_wave_curve, two_harmonic") != std::string::npos, unknown.err);
+  const Result malformed = run("load " + sine + " --param H5 --a 3");
+  BOOST_TEST(malformed.status == 2);
+  BOOST_TEST(malformed.err.find("expected NAME=VALUE") != std::string::npos, malformed.err);
+  const Result mixed = run("load " + sine + " --H1 1 --a 3");
+  BOOST_TEST(mixed.status == 2);
+  const Result beyond = run("load --profile-name parametric_wave_curve --param H1=1 --param m=2 "
+                            "--b1 10 --E 1 --a 7");
+  BOOST_TEST(beyond.status == 2);
+  BOOST_TEST(beyond.err.find("where the profile has a pole") != std::string::npos, beyond.err);
+}

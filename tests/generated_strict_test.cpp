@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "roughness_evaluators.hpp"  // generated/
+#include "profiles.hpp"  // generated/
+#include "roughness_evaluators.hpp"
 #include "waviness.hpp"
 
 namespace tt = boost::test_tools;
@@ -49,4 +50,22 @@ BOOST_AUTO_TEST_CASE(full_contact_is_the_limit_of_the_exact_roughness_pressure) 
     check(8, roughness_n8_pressure<double>(E, H2, b1, -1, 2, Cx, Sx, 1 + Cx));
     check(64, roughness_n64_pressure<double>(E, H2, b1, -1, 2, Cx, Sx, 1 + Cx));
   }
+}
+
+// The example profiles' evaluators, also held to -Werror, in float, double and long double.
+BOOST_AUTO_TEST_CASE(profile_instantiations_agree) {
+  auto at = [](auto zero) {
+    using T = decltype(zero);
+    const T Ca = std::cos(T(1.2)), Cx = std::cos(T(0.5)), E = T(1.5), b1 = 3, H1 = T(0.25);
+    const T p = two_harmonic_pressure<T>(E, b1, H1, T(0.02), Ca, 1 - Ca, Cx, 1 - Cx, Cx - Ca);
+    const T w = parametric_wave_curve_load_slope_factor<T>(E, H1, T(2), Ca, 1 - Ca);
+    return std::make_pair(p, w);
+  };
+  const auto l = at(0.0L);
+  const auto d = at(0.0);
+  const auto f = at(0.0f);
+  BOOST_TEST(d.first == static_cast<double>(l.first), tt::tolerance(1e-14));
+  BOOST_TEST(f.first == static_cast<float>(l.first), tt::tolerance(1e-5f));
+  BOOST_TEST(d.second == static_cast<double>(l.second), tt::tolerance(1e-14));
+  BOOST_TEST(parametric_wave_curve_pole_square_0<double>(1, 3) == 2.0);  // (m+1)/(m-1)
 }

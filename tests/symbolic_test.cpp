@@ -233,6 +233,7 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
   add_terms("waviness.pressure.paper.angle", d.paper_pressure_angle);
   add_terms("waviness.load.angle", d.load_angle);
   add_terms("waviness.pa_over_pstar.angle", d.pa_over_pstar_angle);
+  add_terms("waviness.load_slope_factor.angle", d.load_slope_factor);
 
   std::ifstream manifest(WAVECONTACT_SOURCE_DIR "/generated/manifest.txt");
   BOOST_TEST_REQUIRE(manifest.good());
@@ -250,4 +251,31 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
     ++entries;
   }
   BOOST_TEST(entries == derived.size(), "every derived expression is in the manifest");
+}
+
+// The emitted dP/da: sin(a^) (dP/dSa - dP/dCa) of the angle form equals d/da^ of the v-form
+// load, dP/dalpha * dalpha/da^ = dP/dalpha (1 + alpha^2)/2, at points of the domain (40 digits).
+BOOST_AUTO_TEST_CASE(load_slope_factor_is_the_derivative) {
+  const WavinessDerivation& d = waviness();
+  const ex alpha = sym::alpha();
+  ex load_v = 0, factor = 0;
+  for (const auto& term : d.load_v) load_v += as_ex(term);
+  for (const auto& term : d.load_slope_factor) factor += as_ex(term);
+  const ex expected = load_v.diff(sym::alpha()) * (1 + pow(alpha, 2)) / 2;
+  const ex got = 2 * alpha / (1 + pow(alpha, 2)) * atoms_in_v_variables(factor);  // sin a^
+  const long digits = GiNaC::Digits;
+  GiNaC::Digits = 40;
+  const numeric tolerance = GiNaC::ex_to<numeric>(pow(numeric(10), -30));
+  for (const numeric& m : {numeric(0), numeric(1, 5), numeric(3), numeric(35)}) {
+    for (const numeric& a : {numeric(1, 10), numeric(1, 2), numeric(9, 10)}) {
+      const GiNaC::lst point{alpha == a, sym::m() == m, sym::E() == numeric(3, 2),
+                             sym::H1() == numeric(2, 3)};
+      const ex difference = (got.subs(point) - expected.subs(point)).evalf();
+      const ex scale = expected.subs(point).evalf();
+      BOOST_TEST(GiNaC::ex_to<numeric>(GiNaC::abs(difference / scale).evalf()) < tolerance,
+                 "m = " << m << ", alpha = " << a << ": got " << got.subs(point).evalf()
+                        << ", expected " << scale);
+    }
+  }
+  GiNaC::Digits = digits;
 }

@@ -15,7 +15,9 @@
 #include <cmath>
 
 #include "app.hpp"
+#include "errors.hpp"
 #include "reproduce.hpp"
+#include "user_profile_commands.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/waviness.hpp"
@@ -26,33 +28,32 @@ using wavecontact::Form;
 using wavecontact::TwoScaleContact;
 using wavecontact::TwoScaleParams;
 using wavecontact::WavinessParams;
-
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-// The single-zone solution has a negative total pressure: not a valid result.
-struct InadmissibleError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-std::string number(double value) {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
+using wavecontact::cli::InadmissibleError;
+using wavecontact::cli::all_digits;
+using wavecontact::cli::UsageError;
 
 // Options shared by the subcommands: the profile, the material, the form.
 struct ProfileOptions {
-  double H1 = 0, b1 = 0, m = 0;
+  std::optional<double> H1, m;
+  double b1 = 0;
   std::optional<double> E, E1, nu1, E2, nu2, H2;
   std::optional<int> n;
   std::string form = "exact";
+  std::optional<std::string> profile_name;
+  std::vector<std::string> profile_parameters;
 
   void add_to(CLI::App* app, bool with_form) {
-    app->add_option("--H1", H1, "height of the waviness H1 [length]")->required();
+    auto* h1 = app->add_option("--H1", H1, "height of the waviness H1 [length]");
     app->add_option("--b1", b1, "half-period b1 of the waviness [length]")->required();
-    app->add_option("--m", m, "shape parameter m >= 0 of the parametric wave curve")->required();
+    auto* shape = app->add_option("--m", m, "shape parameter m >= 0 of the parametric wave curve");
+    auto* name = app->add_option(
+        "--profile-name", profile_name,
+        "a generated user profile instead of the wave curve (built in: " +
+            list(wavecontact::available_profiles()) + "), with --param NAME=VALUE");
+    app->add_option("--param", profile_parameters,
+                    "a parameter of the --profile-name profile, NAME=VALUE (repeatable)")
+        ->needs(name);
+    name->excludes(h1)->excludes(shape);
     auto* e = app->add_option("--E", E, "reduced modulus E* [pressure]");
     auto* e1 = app->add_option("--E1", E1, "Young's modulus of body 1 (with --nu1 --E2 --nu2)");
     auto* n1 = app->add_option("--nu1", nu1, "Poisson ratio of body 1");
@@ -63,22 +64,35 @@ struct ProfileOptions {
     auto* ratio = app->add_option("--n", n, "wavelength ratio n = b1/b2, even (with --H2)");
     h2->needs(ratio);
     ratio->needs(h2);
+    name->excludes(h2)->excludes(ratio);
     if (with_form) {
       app->add_option("--form", form, "exact (derived) or paper (printed eq. 13/14)")
           ->check(CLI::IsMember({"exact", "paper"}));
     }
   }
 
+  static std::string list(const std::vector<std::string>& names) {
+    std::string joined;
+    for (const auto& n : names) joined += (joined.empty() ? "" : ", ") + n;
+    return joined;
+  }
+
+  double modulus() const {
+    if (E) return *E;
+    if (E1 && nu1 && E2 && nu2) return wavecontact::reduced_modulus(*E1, *nu1, *E2, *nu2);
+    throw UsageError("give --E, or all of --E1 --nu1 --E2 --nu2");
+  }
+
+  bool is_user_profile() const { return profile_name.has_value(); }
+
+  wavecontact::Profile user_profile() const {
+    if (form != "exact") throw UsageError("--form paper applies to the wave curve only");
+    return wavecontact::cli::user_profile(*profile_name, profile_parameters, b1, modulus());
+  }
+
   WavinessParams params() const {
-    double modulus = 0;
-    if (E) {
-      modulus = *E;
-    } else if (E1 && nu1 && E2 && nu2) {
-      modulus = wavecontact::reduced_modulus(*E1, *nu1, *E2, *nu2);
-    } else {
-      throw UsageError("give --E, or all of --E1 --nu1 --E2 --nu2");
-    }
-    WavinessParams p{H1, b1, m, modulus};
+    if (!H1 || !m) throw UsageError("give --H1 and --m (the wave curve) or --profile-name");
+    WavinessParams p{*H1, b1, *m, modulus()};
     wavecontact::validate(p, "wavecontact");
     return p;
   }
@@ -95,9 +109,9 @@ TwoScaleContact admissible_contact(const TwoScaleParams& params, double a, Form 
   TwoScaleContact contact(params, a, form);
   if (!contact.admissible()) {
     throw InadmissibleError(
-        "no single-zone solution at a = " + number(a) + ": the total pressure is p = " +
-        number(contact.most_negative_pressure()) + " < 0 at x = " +
-        number(contact.most_negative_x()) + " (the contact would separate)");
+        "no single-zone solution at a = " + all_digits(a) + ": the total pressure is p = " +
+        all_digits(contact.most_negative_pressure()) + " < 0 at x = " +
+        all_digits(contact.most_negative_x()) + " (the contact would separate)");
   }
   return contact;
 }
@@ -108,7 +122,7 @@ std::vector<wavecontact::Equilibrium> equilibria(const ProfileOptions& profile, 
       profile.has_roughness() ? wavecontact::two_scale_half_widths(profile.two_scale(), P)
                               : wavecontact::LoadCurve(profile.params()).equilibria(P);
   if (roots.empty()) {
-    throw UsageError("no single contact zone 0 < a < b1 carries P = " + number(P) +
+    throw UsageError("no single contact zone 0 < a < b1 carries P = " + all_digits(P) +
                      " (beyond the largest such load the contact is full)");
   }
   return roots;
@@ -129,18 +143,25 @@ struct ZoneOptions {
     const int given = (a ? 1 : 0) + (P ? 1 : 0) + (ratio ? 1 : 0);
     if (given != 1) throw UsageError("give exactly one of --a, --P, --pa-over-pstar");
     if (a) return std::nullopt;
+    if (ratio && profile.is_user_profile()) {
+      throw UsageError("--pa-over-pstar (p* = pi E* H1/(2 b1)) needs H1: give --P for a user profile");
+    }
+    if (P) return *P;
     const WavinessParams p = profile.params();
-    return P ? *P : *ratio * M_PI * p.E * p.H1;  // pa/p* = P/(pi E* H1)
+    return *ratio * M_PI * p.E * p.H1;  // pa/p* = P/(pi E* H1)
   }
 
   double half_width(const ProfileOptions& profile) const {
     const std::optional<double> P = load(profile);
     if (!P) return *a;
-    const std::vector<wavecontact::Equilibrium> roots = equilibria(profile, *P);
+    const std::vector<wavecontact::Equilibrium> roots =
+        profile.is_user_profile()
+            ? wavecontact::cli::user_profile_equilibria(profile.user_profile(), *P)
+            : equilibria(profile, *P);
     if (roots.size() > 1) {
       std::string list;
       for (const auto& r : roots) {
-        list += (list.empty() ? "" : ", ") + number(r.a) + (r.stable ? " (stable)" : " (unstable)");
+        list += (list.empty() ? "" : ", ") + all_digits(r.a) + (r.stable ? " (stable)" : " (unstable)");
       }
       throw UsageError("the load is carried by several half-widths a = " + list + "; give --a");
     }
@@ -155,8 +176,8 @@ std::string pressure_table(const TwoScaleParams& p, double a, const std::vector<
   os << "x,p,p_waviness,p_roughness\n";
   for (double x : xs) {
     const double pw = contact.waviness_pressure(x), pr = contact.roughness_pressure(x);
-    os << number(x) << "," << number(contact.pressure(x)) << "," << number(pw) << ","
-       << number(pr) << "\n";
+    os << all_digits(x) << "," << all_digits(contact.pressure(x)) << "," << all_digits(pw) << ","
+       << all_digits(pr) << "\n";
   }
   return os.str();
 }
@@ -165,9 +186,9 @@ std::string load_row(const TwoScaleParams& p, double a, Form form) {
   const TwoScaleContact contact = admissible_contact(p, a, form);
   const WavinessParams& w = p.waviness;
   const double P = contact.load();
-  return number(a) + "," + number(P) + "," + number(contact.waviness_load()) + "," +
-         number(contact.roughness_load()) + "," + number(P / (2 * w.b1)) + "," +
-         number(P / (M_PI * w.E * w.H1)) + "," + number(wavecontact::contact_fraction(w, a)) +
+  return all_digits(a) + "," + all_digits(P) + "," + all_digits(contact.waviness_load()) + "," +
+         all_digits(contact.roughness_load()) + "," + all_digits(P / (2 * w.b1)) + "," +
+         all_digits(P / (M_PI * w.E * w.H1)) + "," + all_digits(wavecontact::contact_fraction(w, a)) +
          "\n";
 }
 
@@ -180,10 +201,10 @@ std::string curve_table(const TwoScaleParams& p, int points) {
   for (int k = 1; k <= points; ++k) {
     const double a = w.b1 / 2 * k / points;
     const TwoScaleContact exact(p, a, Form::exact), paper(p, a, Form::paper);
-    os << number(a) << "," << number(wavecontact::contact_fraction(w, a)) << ","
-       << number(exact.load() / (M_PI * w.E * w.H1)) << ","
-       << number(exact.waviness_pressure(0) + exact.roughness_pressure(0)) << ","
-       << number(paper.waviness_pressure(0) + paper.roughness_pressure(0)) << ","
+    os << all_digits(a) << "," << all_digits(wavecontact::contact_fraction(w, a)) << ","
+       << all_digits(exact.load() / (M_PI * w.E * w.H1)) << ","
+       << all_digits(exact.waviness_pressure(0) + exact.roughness_pressure(0)) << ","
+       << all_digits(paper.waviness_pressure(0) + paper.roughness_pressure(0)) << ","
        << (exact.admissible() ? 1 : 0) << "\n";
   }
   return os.str();
@@ -239,7 +260,18 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
   try {
     app.parse(argc, argv);
     std::string output;
-    if (*pressure) {
+    namespace cli = wavecontact::cli;
+    if (*pressure && profile.is_user_profile()) {
+      output = cli::user_profile_pressure(profile.user_profile(), zone.half_width(profile), xs);
+    } else if (*load && load_profile.is_user_profile()) {
+      output = cli::user_profile_load(load_profile.user_profile(), *load_a);
+    } else if (*solve && solve_profile.is_user_profile()) {
+      const std::optional<double> P = solve_zone.load(solve_profile);
+      if (!P) throw UsageError("give --P");
+      output = cli::user_profile_solve(solve_profile.user_profile(), *P);
+    } else if (*curve && curve_profile.is_user_profile()) {
+      output = cli::user_profile_curve(curve_profile.user_profile(), points);
+    } else if (*pressure) {
       output = pressure_table(profile.two_scale(), zone.half_width(profile), xs,
                               profile.selected_form());
     } else if (*load) {
@@ -257,8 +289,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
       bool any_admissible = false;
       for (const auto& e : found) {
         any_admissible = any_admissible || e.admissible;
-        rows += number(TwoScaleContact(p, e.a, Form::exact).load()) + "," + number(e.a) + "," +
-                number(wavecontact::contact_fraction(p.waviness, e.a)) + "," +
+        rows += all_digits(TwoScaleContact(p, e.a, Form::exact).load()) + "," + all_digits(e.a) + "," +
+                all_digits(wavecontact::contact_fraction(p.waviness, e.a)) + "," +
                 (e.stable ? "1" : "0") + "," + (e.admissible ? "1" : "0") + "\n";
       }
       if (!any_admissible) admissible_contact(p, found.front().a, Form::exact);  // throws

@@ -34,6 +34,52 @@ double bracketed_root(const F& f, double lo, double hi, double f_lo, double f_hi
   return left + (right - left) / 2;
 }
 
+// The lowest pressure over the points xs; below -64 eps scale counts as negative.
+template <typename Pressure>
+Admissibility lowest_pressure(const Pressure& p, const std::vector<double>& xs, double scale) {
+  Admissibility result{true, 0, 0};
+  for (double x : xs) {
+    const double value = p(x);
+    if (value < result.most_negative_pressure) {
+      result.most_negative_pressure = value;
+      result.most_negative_x = x;
+    }
+  }
+  result.admissible = !(result.most_negative_pressure < -64 * eps * scale);
+  return result;
+}
+
+// 128 evenly spaced points of [0, a) and 10 approaching the edge.
+std::vector<double> zone_points(double a) {
+  std::vector<double> xs;
+  for (int i = 0; i < 128; ++i) xs.push_back(a * i / 128);
+  for (int k = 1; k <= 10; ++k) xs.push_back(a * (1 - std::ldexp(1.0, -2 * k)));
+  return xs;
+}
+
+// The one equilibrium of a curve, or a domain error naming every candidate.
+double unique_half_width(const char* function, const LoadCurve& curve, double P) {
+  detail::require_positive(function, "P", P);
+  const std::vector<Equilibrium> solutions = curve.equilibria(P);
+  if (solutions.empty()) {
+    detail::domain_error(function, "P", P,
+                         "0 < P <= " + detail::format(curve.maximum_load()) +
+                             ", the largest load of one contact zone per period (beyond it the "
+                             "contact is full)");
+  }
+  if (solutions.size() > 1) {
+    std::string list;
+    for (const Equilibrium& e : solutions) {
+      list += (list.empty() ? "" : ", ") + detail::format(e.a) +
+              (e.stable ? " (stable)" : " (unstable)");
+    }
+    detail::domain_error(function, "P", P,
+                         "a load carried by one half-width only; this one is carried by a = " +
+                             list + ": use wavecontact::LoadCurve::equilibria()");
+  }
+  return solutions.front().a;
+}
+
 }  // namespace
 
 Admissibility admissibility(const WavinessParams& params, double a) {
@@ -42,29 +88,45 @@ Admissibility admissibility(const WavinessParams& params, double a) {
   if (!(std::isfinite(a) && a > 0 && a < params.b1)) {
     detail::domain_error(function, "a", a, "0 < a < b1 = " + detail::format(params.b1));
   }
-  std::vector<double> xs;
-  for (int i = 0; i < 128; ++i) xs.push_back(a * i / 128);
+  std::vector<double> xs = zone_points(a);
   const double kink = params.b1 / 2;
   if (a > kink) {
     for (int i = 0; i < 32; ++i) xs.push_back(kink + (a - kink) * i / 32);
   }
-  for (int k = 1; k <= 10; ++k) xs.push_back(a * (1 - std::ldexp(1.0, -2 * k)));
-  Admissibility result{true, 0, 0};
-  for (double x : xs) {
-    const double p = pressure(params, a, x);
-    if (p < result.most_negative_pressure) result.most_negative_pressure = p, result.most_negative_x = x;
-  }
-  result.admissible = !(result.most_negative_pressure < -64 * eps * pstar(params));
-  return result;
+  return lowest_pressure([&](double x) { return pressure(params, a, x); }, xs, pstar(params));
 }
 
-LoadCurve::LoadCurve(const WavinessParams& params) : params_(params) {
+Admissibility admissibility(const Profile& profile, double a) {
+  const std::vector<double> xs = zone_points(a);
+  double scale = 0;
+  for (double x : xs) scale = std::max(scale, std::fabs(profile.pressure(a, x)));
+  return lowest_pressure([&](double x) { return profile.pressure(a, x); }, xs, scale);
+}
+
+LoadCurve::LoadCurve(const WavinessParams& params)
+    : load_([params](double a) { return load(params, a); }),
+      admissible_([params](double a) { return admissibility(params, a).admissible; }),
+      end_(params.b1) {
   validate(params, "wavecontact::LoadCurve");
   // dP/da has the sign of dP/ds, s = sin(pi r/2), r = a/b1 in (0, 1]; dP/ds does not
   // vanish at r = 1 as dP/da does, through ds/da.
-  auto slope = [&](double r) {
-    return detail::periodic_load_slope(params.m, boost::math::sin_pi(r / 2));
-  };
+  locate_turning_points([m = params.m](double r) {
+    return detail::periodic_load_slope(m, boost::math::sin_pi(r / 2));
+  });
+}
+
+LoadCurve::LoadCurve(const Profile& profile)
+    : load_([profile](double a) { return profile.load(a); }),
+      admissible_([profile](double a) { return admissibility(profile, a).admissible; }),
+      // Short of a pole, where the load grows without bound.
+      end_(profile.reach() < profile.params().b1 ? profile.reach() * (1 - 1e-9) : profile.reach()) {
+  // dP/da = (pi/b1) sin(pi a/b1) F(a) vanishes at a = b1 through the sine: step back from it.
+  locate_turning_points([&profile, end = end_](double r) {
+    return profile.load_slope(r < 1 ? r * end : end * (1 - 1e-9));
+  });
+}
+
+void LoadCurve::locate_turning_points(const std::function<double(double)>& slope) {
   std::vector<double> r(slope_samples + 1), f(slope_samples + 1);
   for (int i = 0; i <= slope_samples; ++i) {
     r[i] = static_cast<double>(i) / slope_samples;
@@ -86,9 +148,9 @@ LoadCurve::LoadCurve(const WavinessParams& params) : params_(params) {
   }
   std::sort(roots.begin(), roots.end());
   turning_points_.push_back(0);
-  for (double root : roots) turning_points_.push_back(root * params.b1);
-  turning_points_.push_back(params.b1);
-  for (double a : turning_points_) turning_loads_.push_back(a > 0 ? load(params, a) : 0);
+  for (double root : roots) turning_points_.push_back(root * end_);
+  turning_points_.push_back(end_);
+  for (double a : turning_points_) turning_loads_.push_back(a > 0 ? load_(a) : 0);
   for (std::size_t i = 1; i < turning_points_.size(); ++i) {
     if (turning_loads_[i] < turning_loads_[i - 1]) {
       unstable_.push_back({turning_points_[i - 1], turning_points_[i]});
@@ -100,23 +162,15 @@ LoadCurve::LoadCurve(const WavinessParams& params) : params_(params) {
 
 std::vector<Equilibrium> LoadCurve::equilibria(double P) const {
   detail::require_positive("wavecontact::LoadCurve::equilibria", "P", P);
-  const double half = params_.b1 / 2, half_load = load(params_, half);
   std::vector<Equilibrium> result;
   for (std::size_t i = 1; i < turning_points_.size(); ++i) {
     const double lo = turning_points_[i - 1], hi = turning_points_[i];
     const double f_lo = turning_loads_[i - 1] - P, f_hi = turning_loads_[i] - P;
     if ((f_lo > 0 && f_hi > 0) || (f_lo < 0 && f_hi < 0) || f_lo == f_hi) continue;
-    double a;
-    if (lo == 0 && P <= half_load) {
-      // P(a) rises on (0, b1/2] (the first turning point lies beyond): the closed form.
-      a = single_asperity_half_width(params_, P);
-    } else {
-      const double from = lo == 0 ? half : lo, f_from = lo == 0 ? half_load - P : f_lo;
-      a = bracketed_root([&](double x) { return load(params_, x) - P; }, from, hi, f_from, f_hi);
-    }
-    if (a <= 0 || a >= params_.b1) continue;
+    const double a = bracketed_root([&](double x) { return load_(x) - P; }, lo, hi, f_lo, f_hi);
+    if (a <= 0 || a >= end_) continue;
     if (!result.empty() && result.back().a == a) continue;  // P at a turning point
-    result.push_back({a, f_hi > f_lo, admissibility(params_, a).admissible});
+    result.push_back({a, f_hi > f_lo, admissible_(a)});
   }
   return result;
 }
@@ -125,25 +179,13 @@ double contact_half_width(const WavinessParams& params, double P) {
   constexpr const char* function = "wavecontact::contact_half_width";
   validate(params, function);
   detail::require_positive(function, "P", P);
-  const LoadCurve curve(params);
-  const std::vector<Equilibrium> solutions = curve.equilibria(P);
-  if (solutions.empty()) {
-    detail::domain_error(function, "P", P,
-                         "0 < P <= " + detail::format(curve.maximum_load()) +
-                             ", the largest load of one contact zone per period (beyond it the "
-                             "contact is full)");
-  }
-  if (solutions.size() > 1) {
-    std::string list;
-    for (const Equilibrium& e : solutions) {
-      list += (list.empty() ? "" : ", ") + detail::format(e.a) +
-              (e.stable ? " (stable)" : " (unstable)");
-    }
-    detail::domain_error(function, "P", P,
-                         "a load carried by one half-width only; this one is carried by a = " +
-                             list + ": use wavecontact::LoadCurve::equilibria()");
-  }
-  return solutions.front().a;
+  return unique_half_width(function, LoadCurve(params), P);
+}
+
+double contact_half_width(const Profile& profile, double P) {
+  constexpr const char* function = "wavecontact::contact_half_width";
+  detail::require_positive(function, "P", P);
+  return unique_half_width(function, LoadCurve(profile), P);
 }
 
 double contact_half_width_for_pa_over_pstar(const WavinessParams& params, double ratio) {

@@ -139,6 +139,11 @@ double load_slope(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::load_slope";
   validate(params, function);
   require_half_width(function, params, a, Form::exact, true);
+  if (!periodic_quadrature(params, a, Form::exact)) {
+    const ZoneAngles zone = zone_angles(a, params.b1);
+    return pi / params.b1 * boost::math::sin_pi(a / params.b1) *
+           generated::waviness_load_slope_factor(params.E, params.H1, params.m, zone.Ca, zone.Sa);
+  }
   const double angle = a / (2 * params.b1);  // s = sin(pi angle), ds/da = pi cos(pi angle)/(2 b1)
   return params.E * params.H1 *
          detail::periodic_load_slope(params.m, boost::math::sin_pi(angle)) * pi *

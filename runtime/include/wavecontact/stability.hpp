@@ -6,9 +6,11 @@
 //   equilibrium is unstable and the zone snaps through to a stable one.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "wavecontact/parameters.hpp"
+#include "wavecontact/profile.hpp"
 
 namespace wavecontact {
 
@@ -27,6 +29,10 @@ struct Admissibility {
 // a pressure below -64 eps p* counts as negative.
 Admissibility admissibility(const WavinessParams& params, double a);
 
+// The same for a user profile, 0 < a < profile.reach(): 128 evenly spaced points and 10
+// approaching the edge; a pressure below -64 eps max|p| counts as negative.
+Admissibility admissibility(const Profile& profile, double a);
+
 struct Equilibrium {
   double a;  // contact half-width [length]
   bool stable;
@@ -39,11 +45,14 @@ struct Equilibrium {
 class LoadCurve {
  public:
   explicit LoadCurve(const WavinessParams& params);
+  // For a user profile, over 0 < a < profile.reach() (up to b1 when the profile has no pole).
+  explicit LoadCurve(const Profile& profile);
 
   // The ranges of a where dP/da < 0 (snap-through), in increasing order.
   const std::vector<HalfWidthRange>& unstable_ranges() const { return unstable_; }
 
-  // The largest load any single zone carries, and P at the onset of full contact (a = b1).
+  // The largest load any single zone carries, and P at the onset of full contact (a = b1;
+  // for a profile with a pole, P just short of the pole).
   double maximum_load() const { return maximum_load_; }
   double full_contact_load() const { return full_contact_load_; }
 
@@ -52,7 +61,11 @@ class LoadCurve {
   std::vector<Equilibrium> equilibria(double P) const;
 
  private:
-  WavinessParams params_;
+  // slope(r), r in (0, 1], has the sign of dP/da at a = r end.
+  void locate_turning_points(const std::function<double(double)>& slope);
+  std::function<double(double)> load_;
+  std::function<bool(double)> admissible_;
+  double end_;  // the largest half-width considered
   std::vector<double> turning_points_;  // 0, every a with dP/da = 0, b1
   std::vector<double> turning_loads_;   // P there
   std::vector<HalfWidthRange> unstable_;
@@ -66,5 +79,8 @@ double contact_half_width(const WavinessParams& params, double P);
 
 // The same for pa/p* = P / (pi E* H1).
 double contact_half_width_for_pa_over_pstar(const WavinessParams& params, double ratio);
+
+// The one half-width carrying P on a user profile (as above).
+double contact_half_width(const Profile& profile, double P);
 
 }  // namespace wavecontact

@@ -34,8 +34,8 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
 // same load; beyond, Form::paper is the continuation of that closed form.
 double load(const WavinessParams& params, double a, Form form = Form::exact);
 
-// dP/da of the exact load [pressure], 0 < a <= b1; negative where the single-zone
-// equilibrium is unstable (snap-through).
+// dP/da of the exact load [pressure], 0 < a <= b1 (closed form up to b1/2, fact 7 by
+// quadrature beyond); negative where the single-zone equilibrium is unstable (snap-through).
 double load_slope(const WavinessParams& params, double a);
 
 // Mean pressure pa = P / L1 = P / (2 b1).

@@ -1,0 +1,39 @@
+// A profile through the engine, the same way for the built-in wave curve and for a
+// user's profile: eq. 11 (g from the profile), eq. 12 (the bounded inversion), eq. 6 (the
+// load), each also in the angle atoms of eq. 14.
+#pragma once
+
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "angle_form.hpp"
+#include "radicals.hpp"
+
+namespace wavecontact::derive {
+
+struct ClosedForms {
+  Radicals radicals;
+  GiNaC::ex profile;     // y(x^), even in sym::x(), rational in cos(k x^), sin(k x^)
+  GiNaC::ex g;           // eq. 11: g(v) = -(E*/2) y'(x^(v))
+  RadicalSum inversion;  // eq. 12 solved: p^(u) = sqrt(alpha^2 - u^2) * inversion(s)
+  RadicalSum load;       // eq. 6: P(alpha)
+  // In physical units, p(x) = (pi/b1) p^(x^); v-form and angle form.
+  std::vector<RootTerm> pressure_v, pressure_angle;
+  std::vector<RootTerm> load_v, load_angle;
+  // dP/dSa - dP/dCa of the angle form: dP/da^ = sin(a^) * load_slope_factor.
+  std::vector<RootTerm> load_slope_factor;
+};
+
+// Every term of a closed form in angle atoms (signs fixed at `sample`).
+std::vector<RootTerm> in_angles(const std::vector<RootTerm>& v_form,
+                                const GiNaC::exmap& sample = sample_point_v());
+
+// Every term's rational part multiplied by factor.
+std::vector<RootTerm> scaled(std::vector<RootTerm> terms, const GiNaC::ex& factor);
+
+// Derives every closed form of the profile y (a GiNaC expression in sym::x()).
+// Throws std::invalid_argument if y is not rational in cos(k x^), sin(k x^) or not even.
+ClosedForms derive_closed_forms(const GiNaC::ex& y, const GiNaC::exmap& sample = sample_point_v());
+
+}  // namespace wavecontact::derive

@@ -1,0 +1,159 @@
+#include "user_profile.hpp"
+
+#include <cmath>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "block_keer.hpp"
+#include "symbols.hpp"
+
+namespace wavecontact::derive {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+const std::regex identifier("[A-Za-z][A-Za-z0-9_]{0,63}");
+
+// Symbols of the derivation and of the emitted code, which a parameter may not shadow.
+const std::set<std::string> reserved{"x", "v", "u", "s", "t", "alpha", "E", "b1", "Ca",
+                                     "Sa", "Cx", "Sx", "D", "Pi", "I", "Scalar"};
+
+[[noreturn]] void refuse(const ProfileSpec& spec, const std::string& why) {
+  throw std::invalid_argument("profile " + spec.name + " = \"" + spec.expression + "\": " + why);
+}
+
+std::string str(const ex& e) {
+  std::ostringstream os;
+  os << e;
+  return os.str();
+}
+
+// The first power with a non-integer exponent (sqrt(cos(x)), cos(x)^(1/3), ...), if any.
+bool find_non_integer_power(const ex& e, ex& found) {
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex exponent = e.op(1);
+    if (!GiNaC::is_a<numeric>(exponent) || !GiNaC::ex_to<numeric>(exponent).is_integer()) {
+      found = e;
+      return true;
+    }
+  }
+  for (const ex& operand : e) {
+    if (find_non_integer_power(operand, found)) return true;
+  }
+  return false;
+}
+
+void check_names(const ProfileSpec& spec) {
+  if (!std::regex_match(spec.name, identifier)) {
+    refuse(spec, "the name must be a C++ identifier: a letter, then letters, digits or _ "
+                 "(at most 64 characters)");
+  }
+  std::set<std::string> seen;
+  for (const auto& p : spec.parameters) {
+    if (!std::regex_match(p.name, identifier)) {
+      refuse(spec, "parameter \"" + p.name + "\" is not an identifier (a letter, then "
+                   "letters, digits or _)");
+    }
+    if (reserved.count(p.name)) {
+      refuse(spec, "parameter \"" + p.name + "\" is reserved (x is the coordinate; E, b1 and "
+                   "the angle atoms Ca Sa Cx Sx D are arguments of the emitted evaluators)");
+    }
+    if (!seen.insert(p.name).second) refuse(spec, "parameter \"" + p.name + "\" is given twice");
+  }
+}
+
+ex parse(const ProfileSpec& spec, const std::vector<GiNaC::realsymbol>& parameters) {
+  GiNaC::symtab table;
+  table["x"] = sym::x();
+  table["Pi"] = GiNaC::Pi;
+  for (const auto& p : parameters) table[p.get_name()] = p;
+  GiNaC::parser reader(table, true);
+  try {
+    return reader(spec.expression);
+  } catch (const std::exception& e) {
+    const std::string what = e.what();
+    refuse(spec, "cannot parse it (" + what.substr(0, what.find('\n')) +
+                     "); the symbols are x and the --param names");
+  }
+}
+
+}  // namespace
+
+ProfileParameter parse_parameter(const std::string& text) {
+  const auto equals = text.find('=');
+  ProfileParameter p{text.substr(0, equals), numeric(1, 2)};
+  if (equals == std::string::npos) return p;
+  const std::string value = text.substr(equals + 1);
+  try {
+    const ex parsed = GiNaC::parser{}(value);
+    if (!GiNaC::is_a<numeric>(parsed) || !GiNaC::ex_to<numeric>(parsed).is_real()) throw 0;
+    // Decimals parse as floats: keep their value as the nearest simple rational.
+    const numeric q = GiNaC::ex_to<numeric>(parsed);
+    p.sample = q.is_rational() ? q : numeric(std::llround(q.to_double() * 1e6), 1000000);
+  } catch (...) {
+    throw std::invalid_argument("--param " + text + ": the sample value \"" + value +
+                                "\" is not a real number (e.g. 0.25 or 1/4)");
+  }
+  return p;
+}
+
+ProfileDerivation derive_profile(const ProfileSpec& spec) {
+  check_names(spec);
+  ProfileDerivation d;
+  d.spec = spec;
+  d.sample = sample_point_v();
+  for (const auto& p : spec.parameters) {
+    d.parameters.emplace_back(p.name);
+    d.sample[d.parameters.back()] = p.sample;
+  }
+  const ex y = parse(spec, d.parameters);
+  if (!y.has(sym::x())) refuse(spec, "it does not depend on x");
+  ex power;
+  if (find_non_integer_power(y, power)) {
+    refuse(spec, str(power) + " is a non-integer power: the profile must be rational in "
+                 "cos(k x) and sin(k x) (integer k) and in the parameters");
+  }
+  ex y_v;
+  try {
+    y_v = in_half_angle_tangent(y);
+  } catch (const std::invalid_argument& e) {
+    refuse(spec, e.what());
+  }
+  if (!(y_v.subs(sym::v() == -sym::v()) - y_v).normal().is_zero()) {
+    refuse(spec, "it is not even in x (y(-x) != y(x)); the contact zone |x| < a is centred "
+                 "on x = 0, a top of the profile");
+  }
+  try {
+    d.forms = derive_closed_forms(y, d.sample);
+  } catch (const std::invalid_argument& e) {
+    refuse(spec, e.what());
+  } catch (const std::logic_error& e) {
+    refuse(spec, std::string(e.what()) + "; try other sample values --param NAME=VALUE");
+  }
+
+  const Radicals& radicals = d.forms.radicals;
+  for (unsigned i = 0; i < radicals.size(); ++i) {
+    const ex tau = radicals.pole(i);
+    if (!GiNaC::is_a<numeric>(tau)) {
+      d.pole_squares.push_back(tau);
+      continue;
+    }
+    const numeric value = GiNaC::ex_to<numeric>(tau);
+    if (value.is_real() && !value.is_negative()) {
+      std::ostringstream os;
+      os.precision(17);
+      os << "g(v) has a pole at v^2 = " << value << ", i.e. at x = +-"
+         << 2 * std::atan(std::sqrt(value.to_double()))
+         << " of the period 2 pi: the profile is unbounded there, and a contact zone "
+            "reaching it has no bounded solution";
+      refuse(spec, os.str());
+    }
+  }
+  return d;
+}
+
+}  // namespace wavecontact::derive

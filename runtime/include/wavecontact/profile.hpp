@@ -1,0 +1,78 @@
+// User profiles: any even periodic shape y(x), rational in cos(k x) and sin(k x), derived
+// by `wavecontact-derive --profile EXPR --name NAME` (derive/user_profile.hpp) into
+// profile_<NAME>.hpp, whose evaluators reach the runtime through ProfileEvaluator.
+// Examples built in: parametric_wave_curve (eq. 2's analytic branch as an expression) and
+// two_harmonic (H1 cos x + H3 cos 3x); others are registered with register_profile().
+//
+// One contact zone |x| < a per period 2 b1, centred on x = 0 (a top of the profile), with
+// the same checks as the built-in wave curve: validation of every argument, admissibility
+// (p >= 0 in the zone) and stability (dP/da > 0), in stability.hpp.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace wavecontact {
+
+// The generated evaluators of one profile behind a uniform interface; q points to the
+// parameters in the order of `parameters`. The angle atoms are those of angles.hpp.
+struct ProfileEvaluator {
+  std::string name;
+  std::string expression;  // y(x^) over the period 2 pi of x^ = pi x/b1
+  std::vector<std::string> parameters;
+  double (*pressure)(const double* q, double E, double b1, double Ca, double Sa, double Cx,
+                     double Sx, double D) = nullptr;
+  double (*load)(const double* q, double E, double Ca, double Sa) = nullptr;
+  // dP/dSa - dP/dCa: dP/da = (pi/b1) sin(pi a/b1) times this.
+  double (*load_slope_factor)(const double* q, double E, double Ca, double Sa) = nullptr;
+  // The poles tau_i = tan^2(x^_i/2) of the profile that depend on the parameters.
+  void (*pole_squares)(const double* q, double* tau) = nullptr;
+  int pole_count = 0;
+};
+
+// Adds (or replaces) the evaluators of evaluator.name.
+void register_profile(const ProfileEvaluator& evaluator);
+
+// The evaluators of a profile; throws std::domain_error listing the available ones if the
+// name is neither built in nor registered.
+ProfileEvaluator profile_evaluator(const std::string& name);
+
+// Every profile name, sorted.
+std::vector<std::string> available_profiles();
+
+struct ProfileParams {
+  std::string name;                          // a registered profile
+  std::map<std::string, double> parameters;  // every parameter of that profile, by name
+  double b1;                                 // half-period [length]
+  double E;                                  // reduced modulus E* [pressure]
+};
+
+// A profile with its parameters bound and checked.
+class Profile {
+ public:
+  // Throws std::domain_error naming the parameter if one is missing, unknown or not finite,
+  // if b1 or E is not positive, or if a pole of the profile lies at x = 0.
+  explicit Profile(const ProfileParams& params);
+
+  const ProfileParams& params() const { return params_; }
+
+  // The largest half-width the contact reaches: b1 (full contact), or the first x > 0
+  // where the profile has a pole, which no contact zone can reach.
+  double reach() const { return reach_; }
+
+  // p(x) for the half-width a, 0 < a < reach(); x taken modulo 2 b1, 0 outside the zone.
+  double pressure(double a, double x) const;
+  // P (eq. 6) and dP/da, 0 < a < reach() (a = b1 too when reach() = b1).
+  double load(double a) const;
+  double load_slope(double a) const;
+
+ private:
+  void check_half_width(const char* function, double a, bool closed) const;
+  ProfileParams params_;
+  ProfileEvaluator evaluator_;
+  std::vector<double> q_;
+  double reach_;
+};
+
+}  // namespace wavecontact

@@ -1,0 +1,124 @@
+// User profiles in derive/ (wavecontact-derive --profile): the derived closed forms against
+// independent expectations, and every refusal with its reason (issue example (c)).
+// GiNaC's exam style: (got - expected).normal() must be zero; failures print everything.
+#define BOOST_TEST_MODULE profile_symbolic
+#include <boost/test/unit_test.hpp>
+
+#include <string>
+
+#include "angle_form.hpp"
+#include "emit_common.hpp"
+#include "symbols.hpp"
+#include "user_profile.hpp"
+#include "waviness.hpp"
+
+using namespace wavecontact::derive;
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+void check_equal(const ex& got, const ex& expected, const std::string& what) {
+  const ex difference = (got - expected).normal();
+  BOOST_TEST(difference.is_zero(), what << "\n  got:      " << got << "\n  expected: " << expected
+                                        << "\n  difference: " << difference);
+}
+
+// The user's parameter symbols renamed to the built-in ones of the same name.
+ex as_built_in(const ex& e, const ProfileDerivation& d) {
+  GiNaC::exmap map;
+  for (const auto& p : d.parameters) {
+    if (p.get_name() == "H1") map[p] = sym::H1();
+    if (p.get_name() == "m") map[p] = sym::m();
+  }
+  return e.subs(map);
+}
+
+// Legendre polynomial P_k(c).
+ex legendre(int k, const ex& c) {
+  if (k == 0) return 1;
+  ex previous = 1, current = c;
+  for (int j = 1; j < k; ++j) {
+    const ex next = ((2 * j + 1) * c * current - j * previous) / (j + 1);
+    previous = current;
+    current = next.expand();
+  }
+  return current;
+}
+
+std::string refusal(const std::string& expression, std::vector<ProfileParameter> parameters = {},
+                    const std::string& name = "p") {
+  try {
+    derive_profile({name, expression, std::move(parameters)});
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+}  // namespace
+
+// Example (a), symbolically: the wave curve typed as an expression gives the built-in
+// closed forms (angle forms of pressure, load and dP/da), exactly.
+BOOST_AUTO_TEST_CASE(wave_curve_expression_equals_the_built_in_derivation) {
+  const ProfileDerivation d = derive_profile(
+      {"wave", "H1*(m+1)*cos(x)/(m*cos(x)+1)", {{"H1", numeric(1)}, {"m", numeric(1, 2)}}});
+  const WavinessDerivation& w = [] {
+    static const WavinessDerivation built_in = derive_waviness();
+    return std::cref(built_in);
+  }();
+  check_equal(as_built_in(single_term(d.forms.pressure_angle), d), single_term(w.pressure_angle),
+              "pressure");
+  check_equal(as_built_in(single_term(d.forms.load_angle), d), single_term(w.load_angle), "load");
+  check_equal(as_built_in(single_term(d.forms.load_slope_factor), d),
+              single_term(w.load_slope_factor), "dP/dSa - dP/dCa");
+  // Its one parameter-dependent pole, cos x = -1/m: v^2 = (m+1)/(m-1).
+  BOOST_TEST_REQUIRE(d.pole_squares.size() == 1u);
+  check_equal(as_built_in(d.pole_squares[0], d), (sym::m() + 1) / (sym::m() - 1), "pole");
+}
+
+// Example (b), symbolically: the load of H1 cos x + H3 cos 3x is the sum of the loads of
+// its harmonics, each the Legendre form of a harmonic cos(k x) in contact (the form the
+// roughness issue derived for cos(n x)): P_k = (pi/2) E* H k [P_{k-1}(cos a) - P_k(cos a)].
+BOOST_AUTO_TEST_CASE(two_harmonic_load_is_the_legendre_form) {
+  const ProfileDerivation d = derive_profile({"two", "H1*cos(x)+H3*cos(3*x)", {{"H1", numeric(1)}, {"H3", numeric(1, 10)}}});
+  const ex H1 = d.parameters[0], H3 = d.parameters[1], Ca = sym::Ca();
+  const ex expected = GiNaC::Pi / 2 * sym::E() *
+                      (H1 * (legendre(0, Ca) - legendre(1, Ca)) +
+                       3 * H3 * (legendre(2, Ca) - legendre(3, Ca)));
+  check_equal(single_term(d.forms.load_angle).subs(sym::Sa() == 1 - Ca), expected, "load");
+  BOOST_TEST(d.pole_squares.empty());  // only the poles at v^2 = -1 of cos(k x)
+  // g(v) = -(E/2) y'(x) = (E/2)(H1 sin x + 3 H3 sin 3x), sin 3x = 3 sin x - 4 sin^3 x,
+  // sin x = 2v/(1 + v^2).
+  const ex v = sym::v(), sin_x = 2 * v / (1 + v * v);
+  check_equal(d.forms.g,
+              sym::E() / 2 * (H1 * sin_x + 3 * H3 * (3 * sin_x - 4 * GiNaC::pow(sin_x, 3))), "g");
+}
+
+// Example (c) and every other refusal, each naming what is wrong and where.
+BOOST_AUTO_TEST_CASE(refusals_say_why_and_where) {
+  const auto contains = [](const std::string& message, const std::string& part) {
+    BOOST_TEST(message.find(part) != std::string::npos, "\"" << part << "\" not in: " << message);
+  };
+  contains(refusal("sqrt(cos(x))"), "sqrt(cos(x)) is a non-integer power");
+  contains(refusal("H*cos(x)^(1/3)", {{"H", 1}}), "is a non-integer power");
+  contains(refusal("sin(x)"), "not even in x");
+  contains(refusal("tan(x)"), "tan(x), which is not rational in cos(k x) and sin(k x)");
+  contains(refusal("cos(x/2)"), "not rational in cos(k x), sin(k x) with integer k");
+  contains(refusal("H*cos(x)"), "symbol \"H\" not found");
+  contains(refusal("cos(x"), "cannot parse it");
+  contains(refusal("2"), "does not depend on x");
+  contains(refusal("cos(x)/(2*cos(x)+1)"), "pole at v^2 = 3, i.e. at x = +-2.094395");
+  contains(refusal("1/(3+cos(x)+cos(2*x))"), "is not linear in v^2");
+  contains(refusal("E*cos(x)", {{"E", 1}}), "parameter \"E\" is reserved");
+  contains(refusal("H*cos(x)", {{"H", 1}, {"H", 2}}), "given twice");
+  contains(refusal("cos(x)", {}, "9lives"), "must be a C++ identifier");
+  BOOST_TEST(refusal("cos(x)+cos(2*x)/4") == "accepted");
+}
+
+BOOST_AUTO_TEST_CASE(parameter_samples_parse) {
+  BOOST_TEST(parse_parameter("H3").sample == numeric(1, 2));
+  BOOST_TEST(parse_parameter("H3=1/4").sample == numeric(1, 4));
+  BOOST_TEST(parse_parameter("H3=0.125").sample == numeric(1, 8));
+  BOOST_CHECK_THROW(parse_parameter("H3=abc"), std::invalid_argument);
+}
