@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
   fs::remove_all(out);
   const Result r = run("reproduce --out '" + out.string() + "'");
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
-  for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8"}) {
+  for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9"}) {
     for (const char* extension : {".csv", ".png"}) {
       const fs::path file = out / (std::string(figure) + extension);
       BOOST_TEST(fs::exists(file), file);
@@ -281,4 +281,20 @@ BOOST_AUTO_TEST_CASE(user_profile_commands) {
                             "--b1 10 --E 1 --a 7");
   BOOST_TEST(beyond.status == 2);
   BOOST_TEST(beyond.err.find("where the profile has a pole") != std::string::npos, beyond.err);
+}
+
+// optimize-shape: one row with the optimum (checked against a brute-force scan in
+// shape_design_test), and a clear refusal of a load no shape carries.
+BOOST_AUTO_TEST_CASE(optimize_shape_prints_the_optimum) {
+  const Result r = run("optimize-shape --pa-over-pstar 0.2");
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  BOOST_TEST(lines(r.out).at(0) == "pa_over_pstar,m,contact_fraction,max_over_mean,x_of_max_over_a");
+  BOOST_TEST_REQUIRE(lines(r.out).size() == 2u);
+  const auto row = fields(lines(r.out)[1]);
+  BOOST_TEST(row.at(1) > 2.5);  // the brute-force check lives in shape_design_test
+  BOOST_TEST(row.at(1) < 3.5);
+  BOOST_TEST(row.at(3) < 1.08);
+  const Result refused = run("optimize-shape --pa-over-pstar 50 --m-max 10");
+  BOOST_TEST(refused.status == 2);
+  BOOST_TEST(refused.err.find("pa/p* = 50") != std::string::npos, refused.err);
 }

@@ -18,6 +18,7 @@
 #include "errors.hpp"
 #include "reproduce.hpp"
 #include "user_profile_commands.hpp"
+#include "wavecontact/shape_design.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/waviness.hpp"
@@ -253,6 +254,13 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
   auto* reproduce = app.add_subcommand("reproduce", "CSV and PNG of the seed paper's figures");
   reproduce->add_option("--out", out_dir, "output directory")->required();
 
+  auto* optimize = app.add_subcommand(
+      "optimize-shape",
+      "the shape m of the wave curve whose pressure is most uniform (min max p / mean p) at a load");
+  double optimize_ratio = 0, optimize_m_max = 100;
+  optimize->add_option("--pa-over-pstar", optimize_ratio, "the load, as pa/p* > 0")->required();
+  optimize->add_option("--m-max", optimize_m_max, "search 0 <= m <= m-max")->capture_default_str();
+
   auto* kcoef = app.add_subcommand("kcoef", "the exact coefficients k_j of eq. 18");
   int kcoef_n = 0;
   kcoef->add_option("--n", kcoef_n, "wavelength ratio n, even >= 2")->required();
@@ -297,6 +305,13 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
       output = "P,a,contact_fraction,stable,admissible\n" + rows;
     } else if (*curve) {
       output = curve_table(curve_profile.two_scale(), points);
+    } else if (*optimize) {
+      const wavecontact::PressureUniformity best =
+          wavecontact::most_uniform_shape(optimize_ratio, optimize_m_max);
+      output = "pa_over_pstar,m,contact_fraction,max_over_mean,x_of_max_over_a\n" +
+               all_digits(optimize_ratio) + "," + all_digits(best.m) + "," +
+               all_digits(best.a_over_b1) + "," + all_digits(best.max_over_mean) + "," +
+               all_digits(best.x_of_max_over_a) + "\n";
     } else if (*kcoef) {
       const auto k = wavecontact::expansion_coefficients(kcoef_n);
       output = "j,k\n";

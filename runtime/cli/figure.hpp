@@ -33,4 +33,7 @@ Figure contact_length();           // Fig. 6
 Figure centre_pressure();          // Fig. 7
 Figure two_scale_contact_area();   // Fig. 8
 
+// Beyond the seed: the most uniform pressure (shape design).
+Figure shape_design();             // fig9
+
 }  // namespace wavecontact::cli

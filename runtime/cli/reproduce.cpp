@@ -29,7 +29,8 @@ void reproduce(const std::string& out_dir, std::ostream& log) {
   fs::create_directories(dir);
   const std::vector<Figure> figures{wave_curves(), two_scale_profiles(), roughness_integrand(), single_asperity_pressure(),
                                periodic_pressure(),
-                               contact_length(), centre_pressure(), two_scale_contact_area()};
+                               contact_length(), centre_pressure(), two_scale_contact_area(),
+                               shape_design()};
   for (const Figure& figure : figures) {
     write(dir / (figure.name + ".csv"), figure.csv);
     write(dir / (figure.name + ".gp"),
