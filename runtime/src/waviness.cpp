@@ -1,9 +1,11 @@
 #include "wavecontact/waviness.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
@@ -169,12 +171,12 @@ double contact_fraction(const WavinessParams& params, double a) {
 double single_asperity_half_width(const WavinessParams& params, double P) {
   constexpr const char* function = "wavecontact::single_asperity_half_width";
   validate(params, function);
-  // pa/p* grows monotonically from 0 at a = 0 to its value at a = b1/2; r = a/b1.
-  auto ratio_at = [&](double r) {
-    const ZoneAngles zone = zone_angles(r, 1.0);
-    return generated::waviness_pa_over_pstar(params.m, zone.Ca, zone.Sa);
-  };
-  const double ratio = P / (pi * params.E * params.H1), maximum = ratio_at(0.5);
+  // pa/p* is increasing in Sa = 1 - cos(pi a/b1), from 0 at a = 0 to its value at Sa = 1
+  // (a = b1/2), with the derivative dpa/p*/dSa = load_slope_factor/(pi E* H1) (generated):
+  // safeguarded Newton in Sa, no trigonometry inside the loop.
+  const double m = params.m;
+  const auto ratio_at = [m](double Sa) { return generated::waviness_pa_over_pstar(m, 1 - Sa, Sa); };
+  const double ratio = P / (pi * params.E * params.H1), maximum = ratio_at(1);
   // A few ulp of slack, so that the value computed at a = b1/2 maps back to b1/2.
   const double slack = 8 * std::numeric_limits<double>::epsilon() * maximum;
   if (!(std::isfinite(ratio) && ratio > 0 && ratio <= maximum + slack)) {
@@ -183,11 +185,18 @@ double single_asperity_half_width(const WavinessParams& params, double P) {
                              " (the load at a = b1/2)");
   }
   if (ratio >= maximum) return params.b1 / 2;
-  std::uintmax_t iterations = 200;
-  const auto [lo, hi] = boost::math::tools::toms748_solve(
-      [&](double r) { return ratio_at(r) - ratio; }, 0.0, 0.5, -ratio, maximum - ratio,
-      boost::math::tools::eps_tolerance<double>(), iterations);
-  return params.b1 * (lo + (hi - lo) / 2);
+  const auto residual = [&](double Sa) {
+    const double Ca = 1 - Sa;
+    return std::make_pair(ratio_at(Sa) - ratio,
+                          generated::waviness_load_slope_factor(1.0, 1.0, m, Ca, Sa) / pi);
+  };
+  // Start from the small-zone limit pa/p* ~ Sa/(2 (1 + m)) of the closed form.
+  const double start = std::min(2 * (1 + m) * ratio, 1.0);
+  std::uintmax_t iterations = 100;
+  const double Sa = boost::math::tools::newton_raphson_iterate(
+      residual, start, 0.0, 1.0, std::numeric_limits<double>::digits, iterations);
+  // a^ = 2 asin(sqrt(Sa/2)) keeps its digits for small zones, where acos(1 - Sa) would not.
+  return params.b1 * 2 * std::asin(std::sqrt(Sa / 2)) / pi;
 }
 
 double wave_curve(const WavinessParams& params, double x) {

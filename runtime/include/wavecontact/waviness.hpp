@@ -51,7 +51,8 @@ double pa_over_pstar(const WavinessParams& params, double a, Form form = Form::e
 double contact_fraction(const WavinessParams& params, double a);
 
 // The half-width a in (0, b1/2] (single-asperity regime) that carries the load P,
-// 0 < P <= load(params, b1/2): a bracketed root (TOMS 748) on the closed-form load.
+// 0 < P <= load(params, b1/2): safeguarded Newton on the closed-form load and its
+// derivative (both generated), in Sa = 1 - cos(pi a/b1).
 // Every solution over the whole range, with its stability: stability.hpp.
 double single_asperity_half_width(const WavinessParams& params, double P);
 
