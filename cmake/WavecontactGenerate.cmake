@@ -5,7 +5,8 @@
 # INTERFACE library that provides them (and links wavecontact::runtime):
 # - N: the roughness evaluators roughness_n<N>.hpp for the given even n. Register them:
 #     wavecontact::register_roughness_evaluator({96, &wavecontact::generated::roughness_n96_pressure<double>,
-#                                                &wavecontact::generated::roughness_n96_load<double>});
+#                                                &wavecontact::generated::roughness_n96_load<double>,
+#                                                &wavecontact::generated::roughness_n96_legendre<double>});
 # - PROFILE: a user profile y(x) (wavecontact-derive --profile, derive/user_profile.hpp) into
 #   profile_<name>.hpp. Register it:
 #     wavecontact::register_profile(wavecontact::generated::<name>_profile_evaluator());

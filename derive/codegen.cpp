@@ -229,7 +229,8 @@ class Printer {
   }
 
   // Temporaries, then `return value;` or, with a target, `const Scalar target = value;`.
-  std::string body(int root, OpCounts& counts, const std::string& target = "") {
+  // The temporaries, then `<assignment><value of root>;`, e.g. assignment = "return ".
+  std::string body(int root, OpCounts& counts, const std::string& assignment) {
     std::ostringstream os;
     for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
       if (uses_[i] == 0) continue;
@@ -240,11 +241,7 @@ class Printer {
         os << "  const Scalar " << names_[i] << " = " << value << ";\n";
       }
     }
-    if (target.empty()) {
-      os << "  return " << expression(root, true) << ";\n";
-    } else {
-      os << "  const Scalar " << target << " = " << expression(root, true) << ";\n";
-    }
+    os << "  " << assignment << expression(root, true) << ";\n";
     return os.str();
   }
 
@@ -300,20 +297,24 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   }
   OpCounts counts;
   std::string body;
-  auto lower_and_print = [&](const ex& value, const std::string& target) {
+  auto lower_and_print = [&](const ex& value, const std::string& assignment) {
     Graph graph(inputs);
     const int root = graph.lower(value);
-    body += Printer(graph.nodes(), root).body(root, counts, target);
+    body += Printer(graph.nodes(), root).body(root, counts, assignment);
   };
   for (const auto& statement : f.statements) {
     const std::string& target = GiNaC::ex_to<GiNaC::symbol>(statement.target).get_name();
     if (inputs.count(target)) {
       throw std::invalid_argument("emit: statement " + target + " shadows a name in " + f.name);
     }
-    lower_and_print(statement.value, target);
+    lower_and_print(statement.value, "const Scalar " + target + " = ");
     inputs.emplace(target, static_cast<int>(inputs.size()));
   }
-  lower_and_print(f.value, "");
+  const bool returns_value = f.outputs.empty();
+  if (returns_value) lower_and_print(f.value, "return ");
+  for (std::size_t k = 0; k < f.outputs.size(); ++k) {
+    lower_and_print(f.outputs[k], "out[" + std::to_string(k) + "] = ");
+  }
 
   std::ostringstream os;
   std::istringstream doc(f.doc);
@@ -322,14 +323,15 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
      << counts.multiplications << " mul, " << counts.divisions << " div, "
      << counts.square_roots << " sqrt, " << counts.negations << " neg), "
      << counts.temporaries << " temporaries\n";
-  os << "template <typename Scalar>\ninline Scalar " << f.name << "(";
+  os << "template <typename Scalar>\ninline " << (returns_value ? "Scalar " : "void ") << f.name << "(";
   for (std::size_t i = 0; i < f.arguments.size(); ++i) {
     const std::string& name = GiNaC::ex_to<GiNaC::symbol>(f.arguments[i]).get_name();
-    bool used = f.value.has(f.arguments[i]);
+    bool used = returns_value && f.value.has(f.arguments[i]);
     for (const auto& statement : f.statements) used = used || statement.value.has(f.arguments[i]);
+    for (const auto& output : f.outputs) used = used || output.has(f.arguments[i]);
     os << (i ? ", " : "") << "const Scalar& " << (used ? name : "/*" + name + "*/");
   }
-  os << ") {\n  using std::sqrt;\n" << body << "}\n";
+  os << (returns_value ? "" : ", Scalar* out") << ") {\n  using std::sqrt;\n" << body << "}\n";
   if (out_counts) *out_counts = counts;
   return os.str();
 }

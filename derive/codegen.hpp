@@ -29,13 +29,15 @@ struct Statement {
 };
 
 // One emitted evaluator: `template <typename Scalar> Scalar name(const Scalar& arg...)`,
-// a straight-line program of statements followed by the returned value.
+// a straight-line program of statements followed by the returned value. With outputs
+// instead, `void name(const Scalar& arg..., Scalar* out)` stores out[k] = outputs[k].
 struct EmittedFunction {
   std::string name;
   std::string doc;                          // comment lines above the function
   std::vector<GiNaC::ex> arguments;  // symbols; parameter names are their names
   GiNaC::ex value;
   std::vector<Statement> statements = {};
+  std::vector<GiNaC::ex> outputs = {};  // if not empty, value is unused
 };
 
 // The C++ source of one function, with its op counts in a comment.

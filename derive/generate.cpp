@@ -28,9 +28,11 @@ std::string roughness_header(int n, const std::string& command) {
         "//   wavecontact::register_roughness_evaluator({" << n << ", &wavecontact::generated::roughness_n"
      << n << "_pressure<double>,\n"
         "//                                            &wavecontact::generated::roughness_n" << n
-     << "_load<double>});\n"
+     << "_load<double>,\n"
+        "//                                            &wavecontact::generated::roughness_n" << n
+     << "_legendre<double>});\n"
         "#pragma once\n\n#include <cmath>\n\nnamespace wavecontact::generated {\n";
-  for (const auto& f : {roughness_pressure_program(n), roughness_load_program(n)}) {
+  for (const auto& f : {roughness_pressure_program(n), roughness_load_program(n), roughness_legendre_program(n)}) {
     os << "\n" << emit_function(f);
   }
   os << "\n}  // namespace wavecontact::generated\n";
@@ -45,11 +47,11 @@ std::string roughness_registry(const std::vector<int>& ns) {
   for (int n : ns) os << "#include \"roughness_n" << n << ".hpp\"\n";
   os << "\nnamespace wavecontact::generated {\n\n" << emit_function(roughness_full_contact_program())
      << "\n"
-        "// Calls visit(n, pressure, load) for every built-in n.\n"
+        "// Calls visit(n, pressure, load, legendre) for every built-in n.\n"
         "template <typename Visitor>\nvoid for_each_roughness_evaluator(Visitor&& visit) {\n";
   for (int n : ns) {
     os << "  visit(" << n << ", &roughness_n" << n << "_pressure<double>, &roughness_n" << n
-       << "_load<double>);\n";
+       << "_load<double>, &roughness_n" << n << "_legendre<double>);\n";
   }
   os << "}\n\n}  // namespace wavecontact::generated\n";
   return os.str();

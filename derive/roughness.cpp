@@ -177,6 +177,22 @@ EmittedFunction roughness_pressure_program(int n) {
           statements};
 }
 
+EmittedFunction roughness_legendre_program(int n) {
+  require_even(n, "roughness_legendre_program");
+  std::vector<Statement> statements;
+  const std::vector<ex> P = legendre_statements(n - 1, statements);
+  EmittedFunction f{program_name(n, "legendre"),
+                    "P_0..P_{n-1}(cos a^), n = " + std::to_string(n) +
+                        ": the coefficients c_j = P_{n-1-j} of the pressure series, which\n"
+                        "depend only on the zone (same recurrence as roughness_n" +
+                        std::to_string(n) + "_pressure); out[k] = P_k.",
+                    {sym::Ca()},
+                    0,
+                    statements};
+  f.outputs = P;
+  return f;
+}
+
 EmittedFunction roughness_load_program(int n) {
   require_even(n, "roughness_load_program");
   std::vector<Statement> statements;

@@ -63,8 +63,11 @@ GiNaC::ex legendre_dirichlet_load(int n);
 //     which does not amplify rounding near Cx = 1;
 //   roughness_n<N>_load(E, H2, Ca, Sa): (pi/2) E H2 n [P_{n-1} - P_n](Ca) through
 //     D_{k+1} = (k D_k + (2k+1) Sa P_k)/(k+1), D_1 = Sa, free of cancellation near Ca = 1.
+//   roughness_n<N>_legendre(Ca, out): out[k] = P_k(Ca), k < n, the same recurrence, for
+//     evaluators that sum the series over many points of one zone (the runtime's array path).
 EmittedFunction roughness_pressure_program(int n);
 EmittedFunction roughness_load_program(int n);
+EmittedFunction roughness_legendre_program(int n);
 
 // Eq. 15, full contact of the harmonic: p_rf = p*_r (cos(n x^) + 1), p*_r = pi E* H2 n/(2 b1),
 // at the onset of full contact (mean pressure p*_r). It is the a -> b1 limit of the exact

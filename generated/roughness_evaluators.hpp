@@ -50,43 +50,43 @@ inline Scalar roughness_full_contact_pressure(const Scalar& E, const Scalar& H2,
   return (n * (H2 * (E * ((Scalar(1.0) + Cnx) * Scalar(1.5707963267948966))))) / b1;
 }
 
-// Calls visit(n, pressure, load) for every built-in n.
+// Calls visit(n, pressure, load, legendre) for every built-in n.
 template <typename Visitor>
 void for_each_roughness_evaluator(Visitor&& visit) {
-  visit(2, &roughness_n2_pressure<double>, &roughness_n2_load<double>);
-  visit(4, &roughness_n4_pressure<double>, &roughness_n4_load<double>);
-  visit(6, &roughness_n6_pressure<double>, &roughness_n6_load<double>);
-  visit(8, &roughness_n8_pressure<double>, &roughness_n8_load<double>);
-  visit(10, &roughness_n10_pressure<double>, &roughness_n10_load<double>);
-  visit(12, &roughness_n12_pressure<double>, &roughness_n12_load<double>);
-  visit(14, &roughness_n14_pressure<double>, &roughness_n14_load<double>);
-  visit(16, &roughness_n16_pressure<double>, &roughness_n16_load<double>);
-  visit(18, &roughness_n18_pressure<double>, &roughness_n18_load<double>);
-  visit(20, &roughness_n20_pressure<double>, &roughness_n20_load<double>);
-  visit(22, &roughness_n22_pressure<double>, &roughness_n22_load<double>);
-  visit(24, &roughness_n24_pressure<double>, &roughness_n24_load<double>);
-  visit(26, &roughness_n26_pressure<double>, &roughness_n26_load<double>);
-  visit(28, &roughness_n28_pressure<double>, &roughness_n28_load<double>);
-  visit(30, &roughness_n30_pressure<double>, &roughness_n30_load<double>);
-  visit(32, &roughness_n32_pressure<double>, &roughness_n32_load<double>);
-  visit(34, &roughness_n34_pressure<double>, &roughness_n34_load<double>);
-  visit(36, &roughness_n36_pressure<double>, &roughness_n36_load<double>);
-  visit(38, &roughness_n38_pressure<double>, &roughness_n38_load<double>);
-  visit(40, &roughness_n40_pressure<double>, &roughness_n40_load<double>);
-  visit(42, &roughness_n42_pressure<double>, &roughness_n42_load<double>);
-  visit(44, &roughness_n44_pressure<double>, &roughness_n44_load<double>);
-  visit(46, &roughness_n46_pressure<double>, &roughness_n46_load<double>);
-  visit(48, &roughness_n48_pressure<double>, &roughness_n48_load<double>);
-  visit(50, &roughness_n50_pressure<double>, &roughness_n50_load<double>);
-  visit(52, &roughness_n52_pressure<double>, &roughness_n52_load<double>);
-  visit(54, &roughness_n54_pressure<double>, &roughness_n54_load<double>);
-  visit(56, &roughness_n56_pressure<double>, &roughness_n56_load<double>);
-  visit(58, &roughness_n58_pressure<double>, &roughness_n58_load<double>);
-  visit(60, &roughness_n60_pressure<double>, &roughness_n60_load<double>);
-  visit(62, &roughness_n62_pressure<double>, &roughness_n62_load<double>);
-  visit(64, &roughness_n64_pressure<double>, &roughness_n64_load<double>);
-  visit(128, &roughness_n128_pressure<double>, &roughness_n128_load<double>);
-  visit(256, &roughness_n256_pressure<double>, &roughness_n256_load<double>);
+  visit(2, &roughness_n2_pressure<double>, &roughness_n2_load<double>, &roughness_n2_legendre<double>);
+  visit(4, &roughness_n4_pressure<double>, &roughness_n4_load<double>, &roughness_n4_legendre<double>);
+  visit(6, &roughness_n6_pressure<double>, &roughness_n6_load<double>, &roughness_n6_legendre<double>);
+  visit(8, &roughness_n8_pressure<double>, &roughness_n8_load<double>, &roughness_n8_legendre<double>);
+  visit(10, &roughness_n10_pressure<double>, &roughness_n10_load<double>, &roughness_n10_legendre<double>);
+  visit(12, &roughness_n12_pressure<double>, &roughness_n12_load<double>, &roughness_n12_legendre<double>);
+  visit(14, &roughness_n14_pressure<double>, &roughness_n14_load<double>, &roughness_n14_legendre<double>);
+  visit(16, &roughness_n16_pressure<double>, &roughness_n16_load<double>, &roughness_n16_legendre<double>);
+  visit(18, &roughness_n18_pressure<double>, &roughness_n18_load<double>, &roughness_n18_legendre<double>);
+  visit(20, &roughness_n20_pressure<double>, &roughness_n20_load<double>, &roughness_n20_legendre<double>);
+  visit(22, &roughness_n22_pressure<double>, &roughness_n22_load<double>, &roughness_n22_legendre<double>);
+  visit(24, &roughness_n24_pressure<double>, &roughness_n24_load<double>, &roughness_n24_legendre<double>);
+  visit(26, &roughness_n26_pressure<double>, &roughness_n26_load<double>, &roughness_n26_legendre<double>);
+  visit(28, &roughness_n28_pressure<double>, &roughness_n28_load<double>, &roughness_n28_legendre<double>);
+  visit(30, &roughness_n30_pressure<double>, &roughness_n30_load<double>, &roughness_n30_legendre<double>);
+  visit(32, &roughness_n32_pressure<double>, &roughness_n32_load<double>, &roughness_n32_legendre<double>);
+  visit(34, &roughness_n34_pressure<double>, &roughness_n34_load<double>, &roughness_n34_legendre<double>);
+  visit(36, &roughness_n36_pressure<double>, &roughness_n36_load<double>, &roughness_n36_legendre<double>);
+  visit(38, &roughness_n38_pressure<double>, &roughness_n38_load<double>, &roughness_n38_legendre<double>);
+  visit(40, &roughness_n40_pressure<double>, &roughness_n40_load<double>, &roughness_n40_legendre<double>);
+  visit(42, &roughness_n42_pressure<double>, &roughness_n42_load<double>, &roughness_n42_legendre<double>);
+  visit(44, &roughness_n44_pressure<double>, &roughness_n44_load<double>, &roughness_n44_legendre<double>);
+  visit(46, &roughness_n46_pressure<double>, &roughness_n46_load<double>, &roughness_n46_legendre<double>);
+  visit(48, &roughness_n48_pressure<double>, &roughness_n48_load<double>, &roughness_n48_legendre<double>);
+  visit(50, &roughness_n50_pressure<double>, &roughness_n50_load<double>, &roughness_n50_legendre<double>);
+  visit(52, &roughness_n52_pressure<double>, &roughness_n52_load<double>, &roughness_n52_legendre<double>);
+  visit(54, &roughness_n54_pressure<double>, &roughness_n54_load<double>, &roughness_n54_legendre<double>);
+  visit(56, &roughness_n56_pressure<double>, &roughness_n56_load<double>, &roughness_n56_legendre<double>);
+  visit(58, &roughness_n58_pressure<double>, &roughness_n58_load<double>, &roughness_n58_legendre<double>);
+  visit(60, &roughness_n60_pressure<double>, &roughness_n60_load<double>, &roughness_n60_legendre<double>);
+  visit(62, &roughness_n62_pressure<double>, &roughness_n62_load<double>, &roughness_n62_legendre<double>);
+  visit(64, &roughness_n64_pressure<double>, &roughness_n64_load<double>, &roughness_n64_legendre<double>);
+  visit(128, &roughness_n128_pressure<double>, &roughness_n128_load<double>, &roughness_n128_legendre<double>);
+  visit(256, &roughness_n256_pressure<double>, &roughness_n256_load<double>, &roughness_n256_legendre<double>);
 }
 
 }  // namespace wavecontact::generated

@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 10 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({10, &wavecontact::generated::roughness_n10_pressure<double>,
-//                                            &wavecontact::generated::roughness_n10_load<double>});
+//                                            &wavecontact::generated::roughness_n10_load<double>,
+//                                            &wavecontact::generated::roughness_n10_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -69,6 +70,32 @@ inline Scalar roughness_n10_load(const Scalar& E, const Scalar& H2, const Scalar
   const Scalar D9 = (Sa * (P8 * Scalar((17.0/9.0)))) + (D8 * Scalar((8.0/9.0)));
   const Scalar D10 = (Sa * (P9 * Scalar((19.0/10.0)))) + (D9 * Scalar((9.0/10.0)));
   return H2 * (E * (D10 * Scalar(15.707963267948966)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 10: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n10_pressure); out[k] = P_k.
+// Total ops: 31 (8 add, 23 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n10_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  const Scalar P2 = (Ca * (Scalar((3.0/2.0)) * Ca)) - Scalar((1.0/2.0));
+  const Scalar P3 = (P2 * (Ca * Scalar((5.0/3.0)))) - (Ca * Scalar((2.0/3.0)));
+  const Scalar P4 = (P3 * (Ca * Scalar((7.0/4.0)))) - (P2 * Scalar((3.0/4.0)));
+  const Scalar P5 = (P4 * (Ca * Scalar((9.0/5.0)))) - (P3 * Scalar((4.0/5.0)));
+  const Scalar P6 = (P5 * (Ca * Scalar((11.0/6.0)))) - (P4 * Scalar((5.0/6.0)));
+  const Scalar P7 = (P6 * (Ca * Scalar((13.0/7.0)))) - (P5 * Scalar((6.0/7.0)));
+  const Scalar P8 = (P7 * (Ca * Scalar((15.0/8.0)))) - (P6 * Scalar((7.0/8.0)));
+  const Scalar P9 = (P8 * (Ca * Scalar((17.0/9.0)))) - (P7 * Scalar((8.0/9.0)));
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
+  out[2] = P2;
+  out[3] = P3;
+  out[4] = P4;
+  out[5] = P5;
+  out[6] = P6;
+  out[7] = P7;
+  out[8] = P8;
+  out[9] = P9;
 }
 
 }  // namespace wavecontact::generated

@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 14 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({14, &wavecontact::generated::roughness_n14_pressure<double>,
-//                                            &wavecontact::generated::roughness_n14_load<double>});
+//                                            &wavecontact::generated::roughness_n14_load<double>,
+//                                            &wavecontact::generated::roughness_n14_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -89,6 +90,40 @@ inline Scalar roughness_n14_load(const Scalar& E, const Scalar& H2, const Scalar
   const Scalar D13 = (D12 * Scalar((12.0/13.0))) + (Sa * (P12 * Scalar((25.0/13.0))));
   const Scalar D14 = (D13 * Scalar((13.0/14.0))) + (Sa * (P13 * Scalar((27.0/14.0))));
   return H2 * (E * (D14 * Scalar(21.991148575128552)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 14: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n14_pressure); out[k] = P_k.
+// Total ops: 47 (12 add, 35 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n14_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  const Scalar P2 = (Ca * (Scalar((3.0/2.0)) * Ca)) - Scalar((1.0/2.0));
+  const Scalar P3 = (P2 * (Ca * Scalar((5.0/3.0)))) - (Ca * Scalar((2.0/3.0)));
+  const Scalar P4 = (P3 * (Ca * Scalar((7.0/4.0)))) - (P2 * Scalar((3.0/4.0)));
+  const Scalar P5 = (P4 * (Ca * Scalar((9.0/5.0)))) - (P3 * Scalar((4.0/5.0)));
+  const Scalar P6 = (P5 * (Ca * Scalar((11.0/6.0)))) - (P4 * Scalar((5.0/6.0)));
+  const Scalar P7 = (P6 * (Ca * Scalar((13.0/7.0)))) - (P5 * Scalar((6.0/7.0)));
+  const Scalar P8 = (P7 * (Ca * Scalar((15.0/8.0)))) - (P6 * Scalar((7.0/8.0)));
+  const Scalar P9 = (P8 * (Ca * Scalar((17.0/9.0)))) - (P7 * Scalar((8.0/9.0)));
+  const Scalar P10 = (P9 * (Ca * Scalar((19.0/10.0)))) - (P8 * Scalar((9.0/10.0)));
+  const Scalar P11 = (P10 * (Ca * Scalar((21.0/11.0)))) - (P9 * Scalar((10.0/11.0)));
+  const Scalar P12 = (P11 * (Ca * Scalar((23.0/12.0)))) - (P10 * Scalar((11.0/12.0)));
+  const Scalar P13 = (P12 * (Ca * Scalar((25.0/13.0)))) - (P11 * Scalar((12.0/13.0)));
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
+  out[2] = P2;
+  out[3] = P3;
+  out[4] = P4;
+  out[5] = P5;
+  out[6] = P6;
+  out[7] = P7;
+  out[8] = P8;
+  out[9] = P9;
+  out[10] = P10;
+  out[11] = P11;
+  out[12] = P12;
+  out[13] = P13;
 }
 
 }  // namespace wavecontact::generated

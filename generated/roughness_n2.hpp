@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 2 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({2, &wavecontact::generated::roughness_n2_pressure<double>,
-//                                            &wavecontact::generated::roughness_n2_load<double>});
+//                                            &wavecontact::generated::roughness_n2_load<double>,
+//                                            &wavecontact::generated::roughness_n2_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -29,6 +30,16 @@ inline Scalar roughness_n2_load(const Scalar& E, const Scalar& H2, const Scalar&
   using std::sqrt;
   const Scalar D2 = (Sa * Scalar((1.0/2.0))) + (Sa * (Ca * Scalar((3.0/2.0))));
   return H2 * (E * (D2 * Scalar(3.1415926535897931)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 2: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n2_pressure); out[k] = P_k.
+// Total ops: 0 (0 add, 0 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n2_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
 }
 
 }  // namespace wavecontact::generated

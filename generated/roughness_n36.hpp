@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 36 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({36, &wavecontact::generated::roughness_n36_pressure<double>,
-//                                            &wavecontact::generated::roughness_n36_load<double>});
+//                                            &wavecontact::generated::roughness_n36_load<double>,
+//                                            &wavecontact::generated::roughness_n36_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -199,6 +200,84 @@ inline Scalar roughness_n36_load(const Scalar& E, const Scalar& H2, const Scalar
   const Scalar D35 = (D34 * Scalar((34.0/35.0))) + (Sa * (P34 * Scalar((69.0/35.0))));
   const Scalar D36 = (D35 * Scalar((35.0/36.0))) + (Sa * (P35 * Scalar((71.0/36.0))));
   return H2 * (E * (D36 * Scalar(56.548667764616276)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 36: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n36_pressure); out[k] = P_k.
+// Total ops: 135 (34 add, 101 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n36_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  const Scalar P2 = (Ca * (Scalar((3.0/2.0)) * Ca)) - Scalar((1.0/2.0));
+  const Scalar P3 = (P2 * (Ca * Scalar((5.0/3.0)))) - (Ca * Scalar((2.0/3.0)));
+  const Scalar P4 = (P3 * (Ca * Scalar((7.0/4.0)))) - (P2 * Scalar((3.0/4.0)));
+  const Scalar P5 = (P4 * (Ca * Scalar((9.0/5.0)))) - (P3 * Scalar((4.0/5.0)));
+  const Scalar P6 = (P5 * (Ca * Scalar((11.0/6.0)))) - (P4 * Scalar((5.0/6.0)));
+  const Scalar P7 = (P6 * (Ca * Scalar((13.0/7.0)))) - (P5 * Scalar((6.0/7.0)));
+  const Scalar P8 = (P7 * (Ca * Scalar((15.0/8.0)))) - (P6 * Scalar((7.0/8.0)));
+  const Scalar P9 = (P8 * (Ca * Scalar((17.0/9.0)))) - (P7 * Scalar((8.0/9.0)));
+  const Scalar P10 = (P9 * (Ca * Scalar((19.0/10.0)))) - (P8 * Scalar((9.0/10.0)));
+  const Scalar P11 = (P10 * (Ca * Scalar((21.0/11.0)))) - (P9 * Scalar((10.0/11.0)));
+  const Scalar P12 = (P11 * (Ca * Scalar((23.0/12.0)))) - (P10 * Scalar((11.0/12.0)));
+  const Scalar P13 = (P12 * (Ca * Scalar((25.0/13.0)))) - (P11 * Scalar((12.0/13.0)));
+  const Scalar P14 = (P13 * (Ca * Scalar((27.0/14.0)))) - (P12 * Scalar((13.0/14.0)));
+  const Scalar P15 = (P14 * (Ca * Scalar((29.0/15.0)))) - (P13 * Scalar((14.0/15.0)));
+  const Scalar P16 = (P15 * (Ca * Scalar((31.0/16.0)))) - (P14 * Scalar((15.0/16.0)));
+  const Scalar P17 = (P16 * (Ca * Scalar((33.0/17.0)))) - (P15 * Scalar((16.0/17.0)));
+  const Scalar P18 = (P17 * (Ca * Scalar((35.0/18.0)))) - (P16 * Scalar((17.0/18.0)));
+  const Scalar P19 = (P18 * (Ca * Scalar((37.0/19.0)))) - (P17 * Scalar((18.0/19.0)));
+  const Scalar P20 = (P19 * (Ca * Scalar((39.0/20.0)))) - (P18 * Scalar((19.0/20.0)));
+  const Scalar P21 = (P20 * (Ca * Scalar((41.0/21.0)))) - (P19 * Scalar((20.0/21.0)));
+  const Scalar P22 = (P21 * (Ca * Scalar((43.0/22.0)))) - (P20 * Scalar((21.0/22.0)));
+  const Scalar P23 = (P22 * (Ca * Scalar((45.0/23.0)))) - (P21 * Scalar((22.0/23.0)));
+  const Scalar P24 = (P23 * (Ca * Scalar((47.0/24.0)))) - (P22 * Scalar((23.0/24.0)));
+  const Scalar P25 = (P24 * (Ca * Scalar((49.0/25.0)))) - (P23 * Scalar((24.0/25.0)));
+  const Scalar P26 = (P25 * (Ca * Scalar((51.0/26.0)))) - (P24 * Scalar((25.0/26.0)));
+  const Scalar P27 = (P26 * (Ca * Scalar((53.0/27.0)))) - (P25 * Scalar((26.0/27.0)));
+  const Scalar P28 = (P27 * (Ca * Scalar((55.0/28.0)))) - (P26 * Scalar((27.0/28.0)));
+  const Scalar P29 = (P28 * (Ca * Scalar((57.0/29.0)))) - (P27 * Scalar((28.0/29.0)));
+  const Scalar P30 = (P29 * (Ca * Scalar((59.0/30.0)))) - (P28 * Scalar((29.0/30.0)));
+  const Scalar P31 = (P30 * (Ca * Scalar((61.0/31.0)))) - (P29 * Scalar((30.0/31.0)));
+  const Scalar P32 = (P31 * (Ca * Scalar((63.0/32.0)))) - (P30 * Scalar((31.0/32.0)));
+  const Scalar P33 = (P32 * (Ca * Scalar((65.0/33.0)))) - (P31 * Scalar((32.0/33.0)));
+  const Scalar P34 = (P33 * (Ca * Scalar((67.0/34.0)))) - (P32 * Scalar((33.0/34.0)));
+  const Scalar P35 = (P34 * (Ca * Scalar((69.0/35.0)))) - (P33 * Scalar((34.0/35.0)));
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
+  out[2] = P2;
+  out[3] = P3;
+  out[4] = P4;
+  out[5] = P5;
+  out[6] = P6;
+  out[7] = P7;
+  out[8] = P8;
+  out[9] = P9;
+  out[10] = P10;
+  out[11] = P11;
+  out[12] = P12;
+  out[13] = P13;
+  out[14] = P14;
+  out[15] = P15;
+  out[16] = P16;
+  out[17] = P17;
+  out[18] = P18;
+  out[19] = P19;
+  out[20] = P20;
+  out[21] = P21;
+  out[22] = P22;
+  out[23] = P23;
+  out[24] = P24;
+  out[25] = P25;
+  out[26] = P26;
+  out[27] = P27;
+  out[28] = P28;
+  out[29] = P29;
+  out[30] = P30;
+  out[31] = P31;
+  out[32] = P32;
+  out[33] = P33;
+  out[34] = P34;
+  out[35] = P35;
 }
 
 }  // namespace wavecontact::generated

@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 4 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({4, &wavecontact::generated::roughness_n4_pressure<double>,
-//                                            &wavecontact::generated::roughness_n4_load<double>});
+//                                            &wavecontact::generated::roughness_n4_load<double>,
+//                                            &wavecontact::generated::roughness_n4_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -39,6 +40,20 @@ inline Scalar roughness_n4_load(const Scalar& E, const Scalar& H2, const Scalar&
   const Scalar D3 = (D2 * Scalar((2.0/3.0))) + (Sa * (P2 * Scalar((5.0/3.0))));
   const Scalar D4 = (D3 * Scalar((3.0/4.0))) + (Sa * (P3 * Scalar((7.0/4.0))));
   return H2 * (E * (D4 * Scalar(6.2831853071795862)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 4: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n4_pressure); out[k] = P_k.
+// Total ops: 7 (2 add, 5 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n4_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  const Scalar P2 = (Ca * (Scalar((3.0/2.0)) * Ca)) - Scalar((1.0/2.0));
+  const Scalar P3 = (P2 * (Ca * Scalar((5.0/3.0)))) - (Ca * Scalar((2.0/3.0)));
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
+  out[2] = P2;
+  out[3] = P3;
 }
 
 }  // namespace wavecontact::generated

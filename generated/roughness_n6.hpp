@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 6 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({6, &wavecontact::generated::roughness_n6_pressure<double>,
-//                                            &wavecontact::generated::roughness_n6_load<double>});
+//                                            &wavecontact::generated::roughness_n6_load<double>,
+//                                            &wavecontact::generated::roughness_n6_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -49,6 +50,24 @@ inline Scalar roughness_n6_load(const Scalar& E, const Scalar& H2, const Scalar&
   const Scalar D5 = (D4 * Scalar((4.0/5.0))) + (Sa * (P4 * Scalar((9.0/5.0))));
   const Scalar D6 = (Sa * (P5 * Scalar((11.0/6.0)))) + (D5 * Scalar((5.0/6.0)));
   return H2 * (E * (D6 * Scalar(9.4247779607693793)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 6: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n6_pressure); out[k] = P_k.
+// Total ops: 15 (4 add, 11 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n6_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  const Scalar P2 = (Ca * (Scalar((3.0/2.0)) * Ca)) - Scalar((1.0/2.0));
+  const Scalar P3 = (P2 * (Ca * Scalar((5.0/3.0)))) - (Ca * Scalar((2.0/3.0)));
+  const Scalar P4 = (P3 * (Ca * Scalar((7.0/4.0)))) - (P2 * Scalar((3.0/4.0)));
+  const Scalar P5 = (P4 * (Ca * Scalar((9.0/5.0)))) - (P3 * Scalar((4.0/5.0)));
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
+  out[2] = P2;
+  out[3] = P3;
+  out[4] = P4;
+  out[5] = P5;
 }
 
 }  // namespace wavecontact::generated

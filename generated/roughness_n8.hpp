@@ -4,7 +4,8 @@
 // Roughness harmonic r(x) = H2 cos(n pi x/b1), n = 8 (seed eqs. 3, 15-21), in the
 // angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_roughness_evaluator({8, &wavecontact::generated::roughness_n8_pressure<double>,
-//                                            &wavecontact::generated::roughness_n8_load<double>});
+//                                            &wavecontact::generated::roughness_n8_load<double>,
+//                                            &wavecontact::generated::roughness_n8_legendre<double>});
 #pragma once
 
 #include <cmath>
@@ -59,6 +60,28 @@ inline Scalar roughness_n8_load(const Scalar& E, const Scalar& H2, const Scalar&
   const Scalar D7 = (Sa * (P6 * Scalar((13.0/7.0)))) + (D6 * Scalar((6.0/7.0)));
   const Scalar D8 = (Sa * (P7 * Scalar((15.0/8.0)))) + (D7 * Scalar((7.0/8.0)));
   return H2 * (E * (D8 * Scalar(12.566370614359172)));
+}
+
+// P_0..P_{n-1}(cos a^), n = 8: the coefficients c_j = P_{n-1-j} of the pressure series, which
+// depend only on the zone (same recurrence as roughness_n8_pressure); out[k] = P_k.
+// Total ops: 23 (6 add, 17 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline void roughness_n8_legendre(const Scalar& Ca, Scalar* out) {
+  using std::sqrt;
+  const Scalar P2 = (Ca * (Scalar((3.0/2.0)) * Ca)) - Scalar((1.0/2.0));
+  const Scalar P3 = (P2 * (Ca * Scalar((5.0/3.0)))) - (Ca * Scalar((2.0/3.0)));
+  const Scalar P4 = (P3 * (Ca * Scalar((7.0/4.0)))) - (P2 * Scalar((3.0/4.0)));
+  const Scalar P5 = (P4 * (Ca * Scalar((9.0/5.0)))) - (P3 * Scalar((4.0/5.0)));
+  const Scalar P6 = (P5 * (Ca * Scalar((11.0/6.0)))) - (P4 * Scalar((5.0/6.0)));
+  const Scalar P7 = (P6 * (Ca * Scalar((13.0/7.0)))) - (P5 * Scalar((6.0/7.0)));
+  out[0] = Scalar(1.0);
+  out[1] = Ca;
+  out[2] = P2;
+  out[3] = P3;
+  out[4] = P4;
+  out[5] = P5;
+  out[6] = P6;
+  out[7] = P7;
 }
 
 }  // namespace wavecontact::generated

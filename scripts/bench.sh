@@ -35,7 +35,8 @@ rows = [
 for n in (16, 64, 256):
     rows.append((f"roughness pressure n={n}, ns/point", per_item_ns,
                  f"BM_roughness_pressure_generated/{n}",
-                 [("numerical inversion", f"BM_roughness_pressure_numerical/{n}")]))
+                 [("numerical inversion", f"BM_roughness_pressure_numerical/{n}"),
+                  ("point API, per call", f"BM_roughness_pressure_point/{n}")]))
 rows.append(("k_1..k_128, ns", time_ns, "BM_kcoefficients/128",
              [("SymPy", "BM_sympy_kcoefficients/128/iterations:1/manual_time")]))
 print(f"\n{'figure':40} {'ours':>12} {'baseline':>24} {'value':>12} {'ratio':>8}")

@@ -4,6 +4,7 @@
 #define BOOST_TEST_MODULE roughness
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -138,6 +139,44 @@ BOOST_AUTO_TEST_CASE(superposition_and_vanishing_roughness) {
   BOOST_TEST(found);
 }
 
+// The array overloads against the point ones: the vectorised series (zone coefficients
+// from the generated roughness_n<N>_legendre) for a <= b1/2, the point loop beyond and for
+// the printed form; points in several periods, outside the zone, and counts that leave a
+// tail shorter than a SIMD vector and a block.
+BOOST_AUTO_TEST_CASE(array_api_matches_point_api) {
+  for (int n : tested_n) {
+    for (double fa : {0.1, 0.3, 0.5, 0.7}) {
+      const TwoScaleParams params{{1.0, 10.0, 2.0, 1.0}, {0.004 / n, n}};
+      const double a = fa * params.waviness.b1;
+      for (Form form : {Form::exact, Form::paper}) {
+        if (form == Form::paper && fa > 0.5) continue;
+        const TwoScaleContact contact(params, a, form);
+        const Eigen::ArrayXd xs = Eigen::ArrayXd::LinSpaced(1031, -25.0, 25.0);
+        Eigen::ArrayXd rough(xs.size()), total(xs.size());
+        contact.roughness_pressure(xs, rough);
+        const bool admissible = contact.admissible();  // m = 2 is not, beyond b1/2
+        if (admissible) contact.pressure(xs, total);
+        const double roughness_scale = pi / params.waviness.b1 * params.waviness.E * params.roughness.H2 * n;
+        const double scale = pi / params.waviness.b1 * params.waviness.E * params.waviness.H1 + roughness_scale;
+        double worst = 0, worst_total = 0;
+        for (Eigen::Index i = 0; i < xs.size(); ++i) {
+          worst = std::max(worst, std::abs(rough[i] - contact.roughness_pressure(xs[i])));
+          if (admissible) worst_total = std::max(worst_total, std::abs(total[i] - contact.pressure(xs[i])));
+        }
+        // Both paths sum n terms, each within ~n eps of the 40-digit reference (accuracy_test).
+        BOOST_TEST(worst <= 4 * n * 2.220446049250313e-16 * roughness_scale,
+                   "n = " << n << ", a = " << a << ": roughness " << worst / roughness_scale << " of scale");
+        BOOST_TEST(worst_total <= 4 * n * 2.220446049250313e-16 * scale,
+                   "n = " << n << ", a = " << a << ": total " << worst_total / scale << " of scale");
+      }
+    }
+  }
+  const TwoScaleContact contact({{1.0, 10.0, 2.0, 1.0}, {0.001, 16}}, 3.0);
+  Eigen::ArrayXd short_p(2);
+  BOOST_CHECK_THROW(contact.roughness_pressure(Eigen::ArrayXd::Zero(3), short_p), std::domain_error);
+  BOOST_CHECK_THROW(contact.pressure(Eigen::ArrayXd::Constant(2, std::nan("")), short_p), std::domain_error);
+}
+
 BOOST_AUTO_TEST_CASE(negative_total_pressure_is_reported) {
   // Large roughness on a flat-topped wave: the single zone would need tension.
   const TwoScaleParams params{{1.0, 10.0, 10.0, 1.0}, {0.5, 8}};
@@ -148,6 +187,15 @@ BOOST_AUTO_TEST_CASE(negative_total_pressure_is_reported) {
   try {
     contact.pressure(0.0);
     BOOST_FAIL("no exception for an inadmissible zone");
+  } catch (const std::domain_error& e) {
+    const std::string message = e.what();
+    BOOST_TEST(message.find("at x = ") != std::string::npos, message);
+    BOOST_TEST(message.find("p = -") != std::string::npos, message);
+  }
+  try {
+    Eigen::ArrayXd p(1);
+    contact.pressure(Eigen::ArrayXd::Zero(1), p);
+    BOOST_FAIL("no exception for an inadmissible zone (array API)");
   } catch (const std::domain_error& e) {
     const std::string message = e.what();
     BOOST_TEST(message.find("at x = ") != std::string::npos, message);

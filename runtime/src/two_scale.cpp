@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <utility>
 #include <stdexcept>
 
 #include <boost/math/constants/constants.hpp>
@@ -13,6 +14,7 @@
 #include <boost/math/tools/roots.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "pressure_simd.hpp"
 #include "roughness_evaluators.hpp"  // generated/
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
@@ -38,8 +40,8 @@ std::mutex registry_mutex;
 std::map<int, RoughnessEvaluator>& registry() {
   static std::map<int, RoughnessEvaluator> evaluators = [] {
     std::map<int, RoughnessEvaluator> built_in;
-    generated::for_each_roughness_evaluator([&](int n, auto pressure, auto load) {
-      built_in[n] = RoughnessEvaluator{n, pressure, load};
+    generated::for_each_roughness_evaluator([&](int n, auto pressure, auto load, auto legendre) {
+      built_in[n] = RoughnessEvaluator{n, pressure, load, legendre};
     });
     return built_in;
   }();
@@ -59,8 +61,14 @@ void validate(const RoughnessParams& r, const char* function) {
 
 void register_roughness_evaluator(const RoughnessEvaluator& evaluator) {
   validate(RoughnessParams{0, evaluator.n}, "wavecontact::register_roughness_evaluator");
-  if (evaluator.pressure == nullptr || evaluator.load == nullptr) {
-    throw std::invalid_argument("wavecontact::register_roughness_evaluator: null evaluator");
+  for (const auto& [name, missing] : {std::pair{"pressure", evaluator.pressure == nullptr},
+                                       std::pair{"load", evaluator.load == nullptr},
+                                       std::pair{"legendre", evaluator.legendre == nullptr}}) {
+    if (missing) {
+      throw std::invalid_argument(std::string("wavecontact::register_roughness_evaluator: ") + name +
+                                  " is null for n = " + std::to_string(evaluator.n) +
+                                  " (pass &roughness_n<N>_" + name + "<double> of the generated header)");
+    }
   }
   const std::lock_guard<std::mutex> lock(registry_mutex);
   registry()[evaluator.n] = evaluator;
@@ -126,6 +134,8 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
   if (form == Form::exact) {
     evaluator_ = roughness_evaluator(params.roughness.n);
     roughness_load_ = evaluator_.load(w.E, params.roughness.H2, zone_.Ca, zone_.Sa);
+    legendre_.resize(static_cast<std::size_t>(params.roughness.n));
+    evaluator_.legendre(zone_.Ca, legendre_.data());
   } else {
     // Eq. 20 integrated over the zone: Gauss-Chebyshev (second kind) in u = alpha cos(phi),
     // geometric convergence for the smooth eq. 20 factor.
@@ -145,14 +155,14 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
 
   // Admissibility scan of the total pressure.
   const int n = params.roughness.n, points = 16 * n + 64;
-  std::vector<double> xs;
-  for (int i = 0; i < points; ++i) xs.push_back(a * i / points);
-  for (int k = 1; k <= 10; ++k) xs.push_back(a * (1 - std::ldexp(1.0, -2 * k)));
+  Eigen::ArrayXd xs(points + 10), p(points + 10);
+  for (int i = 0; i < points; ++i) xs[i] = a * i / points;
+  for (int k = 1; k <= 10; ++k) xs[points + k - 1] = a * (1 - std::ldexp(1.0, -2 * k));
+  wavecontact::pressure(w, a, xs, p, form);
+  add_roughness_pressure(xs, p);
+  Eigen::Index lowest = 0;
+  if (p.minCoeff(&lowest) < 0) most_negative_pressure_ = p[lowest], most_negative_x_ = xs[lowest];
   const double scale = pi / w.b1 * w.E * (w.H1 + params.roughness.H2 * n);
-  for (double x : xs) {
-    const double p = waviness_pressure(x) + roughness_pressure(x);
-    if (p < most_negative_pressure_) most_negative_pressure_ = p, most_negative_x_ = x;
-  }
   admissible_ = !(most_negative_pressure_ < -64 * 2.220446049250313e-16 * scale);
 }
 
@@ -183,15 +193,48 @@ double TwoScaleContact::roughness_pressure(double x) const {
   return pi / w.b1 * EH2 * n * n / 2 * edge * eq20_sum(n, z, one_minus_z);
 }
 
-double TwoScaleContact::pressure(double x) const {
+void TwoScaleContact::add_roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
+                                             Eigen::Ref<Eigen::ArrayXd> p) const {
+  const WavinessParams& w = params_.waviness;
+  if (form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_pressure_available()) {
+    const int n = params_.roughness.n;
+    const double scale = pi / w.b1 * w.E * params_.roughness.H2 * n / 2;
+    detail::simd_add_roughness_pressure({w.b1, a_, scale, legendre_.data(), n}, x.data(), p.data(),
+                                        static_cast<std::size_t>(x.size()));
+    return;
+  }
+  for (Eigen::Index i = 0; i < x.size(); ++i) p[i] += roughness_pressure(x[i]);
+}
+
+void TwoScaleContact::roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
+                                         Eigen::Ref<Eigen::ArrayXd> p) const {
+  detail::require_points("wavecontact::TwoScaleContact::roughness_pressure", x, p.size());
+  p.setZero();
+  add_roughness_pressure(x, p);
+}
+
+void TwoScaleContact::require_admissible(const char* function) const {
   if (!admissible_) {
-    detail::domain_error("wavecontact::TwoScaleContact::pressure", "a", a_,
+    detail::domain_error(function, "a", a_,
                          "a zone where the total pressure is >= 0; here p = " +
                              detail::format(most_negative_pressure_) + " < 0 at x = " +
                              detail::format(most_negative_x_) +
                              ": the single-zone (continuous contact) solution is not physical");
   }
+}
+
+double TwoScaleContact::pressure(double x) const {
+  require_admissible("wavecontact::TwoScaleContact::pressure");
   return waviness_pressure(x) + roughness_pressure(x);
+}
+
+void TwoScaleContact::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
+                               Eigen::Ref<Eigen::ArrayXd> p) const {
+  constexpr const char* function = "wavecontact::TwoScaleContact::pressure";
+  require_admissible(function);
+  detail::require_points(function, x, p.size());
+  wavecontact::pressure(params_.waviness, a_, x, p, form_);
+  add_roughness_pressure(x, p);
 }
 
 double roughness_full_contact_pressure(const TwoScaleParams& params, double x) {

@@ -16,7 +16,7 @@
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "waviness.hpp"  // generated/
-#include "waviness_simd.hpp"
+#include "pressure_simd.hpp"
 
 namespace wavecontact {
 
@@ -82,13 +82,7 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
   constexpr const char* function = "wavecontact::pressure";
   validate(params, function);
   require_half_width(function, params, a, form);
-  if (p.size() != x.size()) {
-    detail::domain_error(function, "p.size()", static_cast<double>(p.size()),
-                         "x.size() = " + std::to_string(x.size()));
-  }
-  if (!x.allFinite()) {
-    for (Eigen::Index i = 0; i < x.size(); ++i) detail::require_finite(function, "x", x[i]);
-  }
+  detail::require_points(function, x, p.size());
   const ZoneAngles zone = zone_angles(a, params.b1);
   if (!periodic_quadrature(params, a, form) && detail::simd_pressure_available()) {
     detail::simd_pressure({params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa}, form,

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "profile_bump.hpp"
 #include "roughness_n96.hpp"
 #include "wavecontact/numerical_inversion.hpp"
@@ -59,19 +61,25 @@ int main() {
   }
 
   wavecontact::register_roughness_evaluator({96, &wavecontact::generated::roughness_n96_pressure<double>,
-                                             &wavecontact::generated::roughness_n96_load<double>});
+                                             &wavecontact::generated::roughness_n96_load<double>,
+                                             &wavecontact::generated::roughness_n96_legendre<double>});
   const wavecontact::TwoScaleContact contact(params, a);
   const auto& w = params.waviness;
   const double H2 = params.roughness.H2, n = 96;
   const double alpha = std::tan(pi * a / (2 * w.b1)), scale = w.E * H2 * n * pi / w.b1;
   const auto g = [&](double v) { return w.E / 2 * H2 * n * std::sin(n * 2 * std::atan(v)); };
+  const Eigen::ArrayXd xs = Eigen::ArrayXd{{0.0, 0.25, 0.5, 0.75, 0.99}} * a;
+  Eigen::ArrayXd array_path(xs.size());  // the array API: registered Legendre coefficients
+  contact.roughness_pressure(xs, array_path);
   double worst = 0;
-  for (double fx : {0.0, 0.25, 0.5, 0.75, 0.99}) {
-    const double x = fx * a, u = std::tan(pi * x / (2 * w.b1));
+  for (Eigen::Index i = 0; i < xs.size(); ++i) {
+    const double u = std::tan(pi * xs[i] / (2 * w.b1));
     const double numerical = pi / w.b1 * wavecontact::numerical_inversion(g, alpha, u, 4 * 96 + 200);
-    worst = std::fmax(worst, std::fabs(contact.roughness_pressure(x) - numerical) / scale);
+    worst = std::fmax(worst, std::fabs(contact.roughness_pressure(xs[i]) - numerical) / scale);
+    worst = std::fmax(worst, std::fabs(array_path[i] - numerical) / scale);
   }
-  std::printf("n = 96: max |generated - numerical inversion| / (E* H2 n pi/b1) = %.3g\n", worst);
+  std::printf("n = 96: max |generated (point and array) - numerical inversion| / (E* H2 n pi/b1) = %.3g\n",
+              worst);
   const double bump = bump_deviation();
   std::printf("profile bump: max |generated - numerical inversion| / max |p| = %.3g\n", bump);
   return worst <= 1e-12 && bump <= 1e-12 ? 0 : 1;

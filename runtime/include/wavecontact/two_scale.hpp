@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
 #include "wavecontact/stability.hpp"
@@ -36,12 +38,15 @@ struct TwoScaleParams {
   RoughnessParams roughness;
 };
 
-// The generated evaluators of one n (generated/roughness_n<N>.hpp).
+// The generated evaluators of one n (generated/roughness_n<N>.hpp): the pressure at one
+// point, the load, and the zone's Legendre coefficients P_0..P_{n-1}(Ca) (out[k] = P_k)
+// from which the array path sums the same series over many points.
 struct RoughnessEvaluator {
   int n;
   double (*pressure)(const double& E, const double& H2, const double& b1, const double& Ca,
                      const double& Sa, const double& Cx, const double& Sx, const double& D);
   double (*load)(const double& E, const double& H2, const double& Ca, const double& Sa);
+  void (*legendre)(const double& Ca, double* out);
 };
 
 // Adds (or replaces) the evaluators for evaluator.n, e.g. those generated for a new n.
@@ -60,7 +65,10 @@ std::vector<std::string> expansion_coefficients(int n);
 
 // One contact zone of half-width a: 0 < a < b1 for the exact form, 0 < a <= b1/2 for the
 // printed one (eq. 19/20 is stated for that range). Construction costs O(n^2) for the
-// admissibility scan; each pressure costs O(n).
+// admissibility scan; each pressure costs O(n). The array overloads take the points x
+// (any period) and write p (p.size() == x.size()) without allocating; for the exact form
+// with a <= b1/2 on a CPU with AVX2 and FMA they sum the series with the zone's Legendre
+// coefficients, computed once, across blocks of points (vectorised).
 class TwoScaleContact {
  public:
   TwoScaleContact(const TwoScaleParams& params, double a, Form form = Form::exact);
@@ -69,6 +77,10 @@ class TwoScaleContact {
   double roughness_pressure(double x) const;
   // p_waviness + p_roughness; throws std::domain_error if the zone is not admissible.
   double pressure(double x) const;
+
+  void roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
+  // Throws std::domain_error if the zone is not admissible.
+  void pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
 
   double waviness_load() const { return waviness_load_; }
   double roughness_load() const { return roughness_load_; }
@@ -83,11 +95,16 @@ class TwoScaleContact {
   double half_width() const { return a_; }
 
  private:
+  // p += p_roughness at every point (arguments already checked).
+  void add_roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
+  void require_admissible(const char* function) const;
+
   TwoScaleParams params_;
   double a_;
   Form form_;
   ZoneAngles zone_;
   RoughnessEvaluator evaluator_{};
+  std::vector<double> legendre_;  // P_k(Ca), k < n (exact form)
   double waviness_load_ = 0, roughness_load_ = 0;
   bool admissible_ = true;
   double most_negative_x_ = 0, most_negative_pressure_ = 0;
