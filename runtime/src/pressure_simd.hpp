@@ -1,5 +1,5 @@
 // The array kernels of the pressure for a <= b1/2: the angle atoms by SLEEF's vectorised
-// sincospi (3.5 ulp) and sinpi (0.506 ulp) four points at a time, then, over a block of
+// sincospi (3.5 ulp, 4 or 8 points at a time), then, over a block of
 // points, either the generated waviness closed form (which the compiler vectorises) or the
 // roughness series with the zone's generated Legendre coefficients. Built for AVX2 + FMA in
 // their own translation unit (pressure_simd_avx2.cpp) and chosen at run time; other CPUs
@@ -25,8 +25,16 @@ struct RoughnessZone {
   int n;
 };
 
-// Whether this CPU runs the AVX2 kernels.
+// Whether this CPU runs the AVX2 kernels, and AVX-512 (for their sincospi).
 bool simd_pressure_available();
+bool avx512_available();
+
+// Points per pass of the kernels; a multiple of 8.
+inline constexpr std::size_t simd_block = 256;
+
+// sin(pi t[k]) and cos(pi t[k]) for k < simd_block (SLEEF, 3.5 ulp), 8 at a time; t, s
+// and c aligned to 64 bytes. Built with -mavx512f: call only if avx512_available().
+void sincospi_block_avx512(const double* t, double* s, double* c);
 
 // p[i] for the points x[i], i < count (finite, any period); 0 outside the zone.
 void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p,

@@ -106,6 +106,11 @@ bool simd_pressure_available() {
   return available;
 }
 
+bool avx512_available() {
+  static const bool available = __builtin_cpu_supports("avx512f");
+  return available;
+}
+
 }  // namespace detail
 
 double pa_over_pstar(const WavinessParams& params, double a, Form form) {
