@@ -34,15 +34,13 @@ double bracketed_root(const F& f, double lo, double hi, double f_lo, double f_hi
   return left + (right - left) / 2;
 }
 
-// The lowest pressure over the points xs; below -64 eps scale counts as negative.
-template <typename Pressure>
-Admissibility lowest_pressure(const Pressure& p, const std::vector<double>& xs, double scale) {
+// The lowest of the pressures p[i] at the points xs[i]; below -64 eps scale counts as negative.
+Admissibility lowest_pressure(const std::vector<double>& xs, const std::vector<double>& p, double scale) {
   Admissibility result{true, 0, 0};
-  for (double x : xs) {
-    const double value = p(x);
-    if (value < result.most_negative_pressure) {
-      result.most_negative_pressure = value;
-      result.most_negative_x = x;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    if (p[i] < result.most_negative_pressure) {
+      result.most_negative_pressure = p[i];
+      result.most_negative_x = xs[i];
     }
   }
   result.admissible = !(result.most_negative_pressure < -64 * eps * scale);
@@ -57,9 +55,9 @@ std::vector<double> zone_points(double a) {
   return xs;
 }
 
-// The one equilibrium of a curve, or a domain error naming every candidate.
+// The one equilibrium of a curve (P > 0 checked by the caller before building the curve),
+// or a domain error naming every candidate.
 double unique_half_width(const char* function, const LoadCurve& curve, double P) {
-  detail::require_positive(function, "P", P);
   const std::vector<Equilibrium> solutions = curve.equilibria(P);
   if (solutions.empty()) {
     detail::domain_error(function, "P", P,
@@ -93,14 +91,20 @@ Admissibility admissibility(const WavinessParams& params, double a) {
   if (a > kink) {
     for (int i = 0; i < 32; ++i) xs.push_back(kink + (a - kink) * i / 32);
   }
-  return lowest_pressure([&](double x) { return pressure(params, a, x); }, xs, pstar(params));
+  std::vector<double> p;
+  for (double x : xs) p.push_back(pressure(params, a, x));
+  return lowest_pressure(xs, p, pstar(params));
 }
 
 Admissibility admissibility(const Profile& profile, double a) {
   const std::vector<double> xs = zone_points(a);
+  std::vector<double> p;
   double scale = 0;
-  for (double x : xs) scale = std::max(scale, std::fabs(profile.pressure(a, x)));
-  return lowest_pressure([&](double x) { return profile.pressure(a, x); }, xs, scale);
+  for (double x : xs) {
+    p.push_back(profile.pressure(a, x));
+    scale = std::max(scale, std::fabs(p.back()));
+  }
+  return lowest_pressure(xs, p, scale);
 }
 
 LoadCurve::LoadCurve(const WavinessParams& params)
