@@ -1,5 +1,7 @@
 #include "block_keer.hpp"
 
+#include <algorithm>
+#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
 
@@ -77,6 +79,16 @@ ex in_half_angle_tangent(const ex& y) {
     throw std::invalid_argument(os.str());
   }
   return result;
+}
+
+long highest_harmonic(const ex& y) {
+  long highest = 0;
+  if (GiNaC::is_a<GiNaC::function>(y)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(y).get_name();
+    if (name == "cos" || name == "sin") highest = std::labs(multiple_of_x(y.op(0), y));
+  }
+  for (const ex& operand : y) highest = std::max(highest, highest_harmonic(operand));
+  return highest;
 }
 
 ex hilbert_rhs(const ex& y) {

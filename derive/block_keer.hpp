@@ -20,6 +20,9 @@ GiNaC::ex exp_i(const GiNaC::ex& v);
 // Throws std::invalid_argument naming the offending subexpression otherwise.
 GiNaC::ex in_half_angle_tangent(const GiNaC::ex& y);
 
+// The highest k of the cos(k x^), sin(k x^) in the profile y (0 if none).
+long highest_harmonic(const GiNaC::ex& y);
+
 // Right-hand side of eq. 5: g(v) = -(E*/2) y'(x^(v)), in lowest terms.
 GiNaC::ex hilbert_rhs(const GiNaC::ex& y);
 

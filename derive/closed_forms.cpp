@@ -44,6 +44,11 @@ ClosedForms derive_closed_forms(const ex& y, const GiNaC::exmap& sample) {
   d.pressure_angle = in_angles(d.pressure_v, sample);
   d.load_angle = in_angles(d.load_v, sample);
   for (const auto& term : d.load_angle) d.load_slope_factor.push_back(slope_factor(term));
+  // y is even in x^, so rational in v^2 = tan^2(x^/2) = (1 - s)/(1 + s).
+  const GiNaC::realsymbol& s = sym::Cx();
+  d.height = in_half_angle_tangent(y).subs(sym::v() == GiNaC::sqrt((1 - s) / (1 + s))).normal();
+  d.height_slope = d.height.diff(s).normal();
+  d.harmonic = highest_harmonic(y);
   return d;
 }
 

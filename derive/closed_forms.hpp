@@ -23,6 +23,10 @@ struct ClosedForms {
   std::vector<RootTerm> load_v, load_angle;
   // dP/dSa - dP/dCa of the angle form: dP/da^ = sin(a^) * load_slope_factor.
   std::vector<RootTerm> load_slope_factor;
+  // The profile in s = cos x^ (sym::Cx()), y(x^) = Y(cos x^), and dY/ds: the surface as the
+  // multi-zone contact solver of the runtime sees it (runtime/src/interval_inversion.hpp).
+  GiNaC::ex height, height_slope;
+  long harmonic = 1;  // the highest k of cos(k x^), sin(k x^) in the profile
 };
 
 // Every term of a closed form in angle atoms (signs fixed at `sample`).

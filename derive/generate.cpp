@@ -106,6 +106,12 @@ std::string waviness_header(const WavinessDerivation& d) {
       {"waviness_pa_over_pstar",
        "Dimensionless mean pressure pa/p* = P/(pi E* H1), p* = pi E* H1/(2 b1).",
        {sym::m(), sym::Ca(), sym::Sa()}, single_term(d.pa_over_pstar_angle)},
+      {"waviness_height",
+       "The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).",
+       {sym::H1(), sym::m(), sym::Cx()}, d.height},
+      {"waviness_height_slope",
+       "dY/dCx of waviness_height, Cx >= 0 (even in Cx): the contact solver's right-hand side.",
+       {sym::H1(), sym::m(), sym::Cx()}, d.height_slope},
   };
 
   std::ostringstream os;
@@ -148,6 +154,8 @@ std::string manifest(const WavinessDerivation& d) {
   write_terms(os, "waviness.load.angle", d.load_angle);
   write_terms(os, "waviness.pa_over_pstar.angle", d.pa_over_pstar_angle);
   write_terms(os, "waviness.load_slope_factor.angle", d.load_slope_factor);
+  os << "waviness.height = " << canonical_rational(d.height) << "\n";
+  os << "waviness.height_slope = " << canonical_rational(d.height_slope) << "\n";
   return os.str();
 }
 

@@ -52,6 +52,11 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
        "dP/dSa - dP/dCa, so that dP/da = (pi/b1) sin(a^) times this.",
        with_parameters({sym::E()}, d, zone), single_term(d.forms.load_slope_factor)},
   };
+  functions.push_back({name + "_height", "The profile in Cx = cos x^: y(x^) = Y(Cx).",
+                       with_parameters({}, d, {sym::Cx()}), d.forms.height});
+  functions.push_back({name + "_height_slope",
+                       "dY/dCx: the right-hand side of the multi-zone contact solver.",
+                       with_parameters({}, d, {sym::Cx()}), d.forms.height_slope});
   for (std::size_t i = 0; i < d.pole_squares.size(); ++i) {
     functions.push_back({name + "_pole_square_" + std::to_string(i),
                          "A pole v^2 = tan^2(x^/2) of g; where real and > 0 the contact "
@@ -94,6 +99,11 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
      << "  e.load_slope_factor = [](const double* " << unused
      << ", double E, double Ca, double Sa) {\n"
      << "    return " << name << "_load_slope_factor<double>(E, " << q << "Ca, Sa);\n  };\n"
+     << "  e.height = [](const double* " << unused << ", double Cx) {\n"
+     << "    return " << name << "_height<double>(" << q << "Cx);\n  };\n"
+     << "  e.height_slope = [](const double* " << unused << ", double Cx) {\n"
+     << "    return " << name << "_height_slope<double>(" << q << "Cx);\n  };\n"
+     << "  e.harmonic = " << d.forms.harmonic << ";\n"
      << "  e.pole_squares = [](const double* " << (d.pole_squares.empty() ? "/*q*/" : unused)
      << ", double* " << (d.pole_squares.empty() ? "/*tau*/" : "tau") << ") {\n";
   for (std::size_t i = 0; i < d.pole_squares.size(); ++i) {
@@ -124,6 +134,9 @@ std::string manifest(const ProfileDerivation& d, const std::string& command) {
   write_terms(os, "profile.pressure.angle", d.forms.pressure_angle);
   write_terms(os, "profile.load.angle", d.forms.load_angle);
   write_terms(os, "profile.load_slope_factor.angle", d.forms.load_slope_factor);
+  os << "profile.height = " << canonical_rational(d.forms.height) << "\n";
+  os << "profile.height_slope = " << canonical_rational(d.forms.height_slope) << "\n";
+  os << "profile.harmonic = " << d.forms.harmonic << "\n";
   return os.str();
 }
 

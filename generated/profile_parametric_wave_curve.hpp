@@ -47,6 +47,23 @@ inline Scalar parametric_wave_curve_load_slope_factor(const Scalar& E, const Sca
   return (((m * (Sa * (H1 * (E * Scalar(9.4247779607693793))))) + ((m * (H1 * (E * (Ca * Scalar(6.2831853071795862))))) + (H1 * (E * Scalar(6.2831853071795862))))) * (_tmp0 * (sqrt(_tmp1 / _tmp0) * Scalar((1.0/4.0))))) / (_tmp1 * (_tmp1 * _tmp1));
 }
 
+// The profile in Cx = cos x^: y(x^) = Y(Cx).
+// Total ops: 6 (2 add, 3 mul, 1 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline Scalar parametric_wave_curve_height(const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  return (H1 * (Cx * (Scalar(1.0) + m))) / (Scalar(1.0) + (Cx * m));
+}
+
+// dY/dCx: the right-hand side of the multi-zone contact solver.
+// Total ops: 6 (2 add, 3 mul, 1 div, 0 sqrt, 0 neg), 1 temporaries
+template <typename Scalar>
+inline Scalar parametric_wave_curve_height_slope(const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) + (Cx * m);
+  return (H1 + (m * H1)) / (_tmp0 * _tmp0);
+}
+
 // A pole v^2 = tan^2(x^/2) of g; where real and > 0 the contact cannot reach it.
 // Total ops: 4 (2 add, 0 mul, 1 div, 0 sqrt, 1 neg), 0 temporaries
 template <typename Scalar>
@@ -70,6 +87,13 @@ inline ProfileEvaluator parametric_wave_curve_profile_evaluator() {
   e.load_slope_factor = [](const double* q, double E, double Ca, double Sa) {
     return parametric_wave_curve_load_slope_factor<double>(E, q[0], q[1], Ca, Sa);
   };
+  e.height = [](const double* q, double Cx) {
+    return parametric_wave_curve_height<double>(q[0], q[1], Cx);
+  };
+  e.height_slope = [](const double* q, double Cx) {
+    return parametric_wave_curve_height_slope<double>(q[0], q[1], Cx);
+  };
+  e.harmonic = 1;
   e.pole_squares = [](const double* q, double* tau) {
     tau[0] = parametric_wave_curve_pole_square_0<double>(q[0], q[1]);
   };

@@ -42,6 +42,22 @@ inline Scalar two_harmonic_load_slope_factor(const Scalar& E, const Scalar& H1, 
   return (Ca * (((H3 * (E * Scalar(11.780972450961725))) * Ca) + (_tmp0 - (Sa * (H3 * (E * Scalar(23.56194490192345))))))) + (((H1 * (E * Scalar(1.5707963267948966))) - (Sa * _tmp0)) - (H3 * (E * Scalar(2.3561944901923448))));
 }
 
+// The profile in Cx = cos x^: y(x^) = Y(Cx).
+// Total ops: 7 (2 add, 5 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline Scalar two_harmonic_height(const Scalar& H1, const Scalar& H3, const Scalar& Cx) {
+  using std::sqrt;
+  return Cx * ((Cx * ((H3 * Scalar(4.0)) * Cx)) + (H1 - (H3 * Scalar(3.0))));
+}
+
+// dY/dCx: the right-hand side of the multi-zone contact solver.
+// Total ops: 6 (2 add, 4 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline Scalar two_harmonic_height_slope(const Scalar& H1, const Scalar& H3, const Scalar& Cx) {
+  using std::sqrt;
+  return (Cx * ((H3 * Scalar(12.0)) * Cx)) + (H1 - (H3 * Scalar(3.0)));
+}
+
 // The evaluators above behind the runtime's uniform interface.
 inline ProfileEvaluator two_harmonic_profile_evaluator() {
   ProfileEvaluator e;
@@ -57,6 +73,13 @@ inline ProfileEvaluator two_harmonic_profile_evaluator() {
   e.load_slope_factor = [](const double* q, double E, double Ca, double Sa) {
     return two_harmonic_load_slope_factor<double>(E, q[0], q[1], Ca, Sa);
   };
+  e.height = [](const double* q, double Cx) {
+    return two_harmonic_height<double>(q[0], q[1], Cx);
+  };
+  e.height_slope = [](const double* q, double Cx) {
+    return two_harmonic_height_slope<double>(q[0], q[1], Cx);
+  };
+  e.harmonic = 3;
   e.pole_squares = [](const double* /*q*/, double* /*tau*/) {
   };
   e.pole_count = 0;

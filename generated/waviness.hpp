@@ -66,4 +66,21 @@ inline Scalar waviness_pa_over_pstar(const Scalar& m, const Scalar& Ca, const Sc
   return (Sa * (_tmp0 * (sqrt(_tmp1 / _tmp0) * Scalar((1.0/2.0))))) / (_tmp1 * _tmp1);
 }
 
+// The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).
+// Total ops: 6 (2 add, 3 mul, 1 div, 0 sqrt, 0 neg), 0 temporaries
+template <typename Scalar>
+inline Scalar waviness_height(const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  return (H1 * (Cx * (Scalar(1.0) + m))) / (Scalar(1.0) + (Cx * m));
+}
+
+// dY/dCx of waviness_height, Cx >= 0 (even in Cx): the contact solver's right-hand side.
+// Total ops: 6 (2 add, 3 mul, 1 div, 0 sqrt, 0 neg), 1 temporaries
+template <typename Scalar>
+inline Scalar waviness_height_slope(const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) + (Cx * m);
+  return (H1 + (m * H1)) / (_tmp0 * _tmp0);
+}
+
 }  // namespace wavecontact::generated

@@ -122,3 +122,18 @@ BOOST_AUTO_TEST_CASE(parameter_samples_parse) {
   BOOST_TEST(parse_parameter("H3=0.125").sample == numeric(1, 8));
   BOOST_CHECK_THROW(parse_parameter("H3=abc"), std::invalid_argument);
 }
+
+// The emitted Y(Cx) of a profile is the profile in Cx = cos x^ (cos 3x^ = 4 Cx^3 - 3 Cx),
+// its slope dY/dCx, and the highest harmonic is 3.
+BOOST_AUTO_TEST_CASE(profile_height_in_cos) {
+  const ProfileDerivation d =
+      derive_profile({"two_harmonic", "H1*cos(x)+H3*cos(3*x)", {{"H1", 1}, {"H3", numeric(1, 10)}}});
+  const ex H1 = d.parameters[0], H3 = d.parameters[1], C = sym::Cx();
+  check_equal(d.forms.height, H1 * C + H3 * (4 * pow(C, 3) - 3 * C), "Y(Cx)");
+  check_equal(d.forms.height_slope, H1 + H3 * (12 * pow(C, 2) - 3), "dY/dCx");
+  BOOST_TEST(d.forms.harmonic == 3);
+  // A profile with a denominator: y = cos x/(2 - cos x), Y(C) = C/(2 - C).
+  const ProfileDerivation bump = derive_profile({"bump", "cos(x)/(2-cos(x))", {}});
+  check_equal(bump.forms.height, C / (2 - C), "Y(Cx) of cos x/(2 - cos x)");
+  check_equal(bump.forms.height_slope, 2 / pow(2 - C, 2), "dY/dCx of cos x/(2 - cos x)");
+}

@@ -234,6 +234,8 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
   add_terms("waviness.load.angle", d.load_angle);
   add_terms("waviness.pa_over_pstar.angle", d.pa_over_pstar_angle);
   add_terms("waviness.load_slope_factor.angle", d.load_slope_factor);
+  derived["waviness.height"] = d.height;
+  derived["waviness.height_slope"] = d.height_slope;
 
   std::ifstream manifest(WAVECONTACT_SOURCE_DIR "/generated/manifest.txt");
   BOOST_TEST_REQUIRE(manifest.good());
@@ -278,4 +280,16 @@ BOOST_AUTO_TEST_CASE(load_slope_factor_is_the_derivative) {
     }
   }
   GiNaC::Digits = digits;
+}
+
+// The surface as the multi-zone solver sees it: Y(cos x^) is the profile of eq. 2 (its
+// analytic branch) and height_slope is dY/ds, checked against the profile itself.
+BOOST_AUTO_TEST_CASE(height_in_cos_is_the_profile) {
+  const WavinessDerivation& d = waviness();
+  const ex c = GiNaC::cos(sym::x());
+  check_equal(d.height.subs(sym::Cx() == c), parametric_wave_curve(), "Y(cos x^)");
+  // dy/dx^ = Y'(cos x^) (-sin x^).
+  check_equal(-d.height_slope.subs(sym::Cx() == c) * GiNaC::sin(sym::x()),
+              parametric_wave_curve().diff(sym::x()), "Y'(cos x^) d(cos x^)/dx^");
+  BOOST_TEST(d.harmonic == 1);
 }

@@ -39,7 +39,8 @@ std::string joined(const std::vector<std::string>& names) {
 
 void register_profile(const ProfileEvaluator& evaluator) {
   if (evaluator.name.empty() || !evaluator.pressure || !evaluator.load ||
-      !evaluator.load_slope_factor || !evaluator.pole_squares || evaluator.pole_count < 0) {
+      !evaluator.load_slope_factor || !evaluator.height || !evaluator.height_slope ||
+      !evaluator.pole_squares || evaluator.pole_count < 0 || evaluator.harmonic < 0) {
     throw std::invalid_argument("wavecontact::register_profile: incomplete evaluator \"" +
                                 evaluator.name + "\"");
   }

@@ -26,6 +26,11 @@ struct ProfileEvaluator {
   double (*load)(const double* q, double E, double Ca, double Sa) = nullptr;
   // dP/dSa - dP/dCa: dP/da = (pi/b1) sin(pi a/b1) times this.
   double (*load_slope_factor)(const double* q, double E, double Ca, double Sa) = nullptr;
+  // The profile in Cx = cos x^, y(x^) = Y(Cx), and dY/dCx: the surface as the multi-zone
+  // contact solver sees it (contact.hpp); harmonic: the highest k of cos(k x), sin(k x).
+  double (*height)(const double* q, double Cx) = nullptr;
+  double (*height_slope)(const double* q, double Cx) = nullptr;
+  int harmonic = 1;
   // The poles tau_i = tan^2(x^_i/2) of the profile that depend on the parameters.
   void (*pole_squares)(const double* q, double* tau) = nullptr;
   int pole_count = 0;
@@ -56,6 +61,9 @@ class Profile {
   explicit Profile(const ProfileParams& params);
 
   const ProfileParams& params() const { return params_; }
+  const ProfileEvaluator& evaluator() const { return evaluator_; }
+  // The parameters' values in the order of evaluator().parameters.
+  const std::vector<double>& parameter_values() const { return q_; }
 
   // The largest half-width the contact reaches: b1 (full contact), or the first x > 0
   // where the profile has a pole, which no contact zone can reach.
