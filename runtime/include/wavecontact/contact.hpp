@@ -1,0 +1,135 @@
+// The real contact at any load: the unique solution of the frictionless periodic contact
+// (p >= 0 on the contact set, gap >= 0 off it; it minimises a strictly convex energy), with
+// as many zones per period as it takes, up to full contact.
+//
+// The surface is the wave curve of eq. 2 with any number of roughness harmonics
+// H_i cos(n_i pi x/b1) (eqs. 1, 3), or a user profile (profile.hpp). The zones' ends solve
+// the bounded inversion of the finite Hilbert transform on several intervals (Muskhelishvili)
+// with one rigid approach for all zones; the zones are found by continuation in the load
+// (runtime/src/contact_solver.hpp). Where one zone per period is the solution this is the
+// seed's single-zone solution (the closed forms of waviness.hpp, two_scale.hpp, profile.hpp,
+// to 1e-10); where it is not, those closed forms are refused (admissibility in stability.hpp).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "wavecontact/parameters.hpp"
+#include "wavecontact/profile.hpp"
+
+namespace wavecontact {
+
+namespace detail {
+struct SurfaceSlope;
+class IntervalInversion;
+}  // namespace detail
+
+struct TwoScaleParams;
+
+// A roughness harmonic H cos(n pi x/b1): H finite (negative: a trough at x = 0), n >= 1.
+struct Harmonic {
+  double H;  // [length]
+  int n;
+};
+
+// The surface y(x), even and of period 2 b1, pressed against a half-plane of reduced
+// modulus E*.
+class Surface {
+ public:
+  // The wave curve plus the harmonics (none: the wave curve alone).
+  explicit Surface(const WavinessParams& waviness, const std::vector<Harmonic>& roughness = {});
+  // The seed's two-scale profile (eq. 1): one harmonic.
+  explicit Surface(const TwoScaleParams& params);
+  // A user profile; throws std::domain_error if it has a pole on the period.
+  explicit Surface(const Profile& profile);
+
+  double b1() const { return b1_; }
+  double E() const { return E_; }
+  // y(x) [length], any x.
+  double height(double x) const;
+
+  // The solver's view of the surface (runtime/src/interval_inversion.hpp).
+  const detail::SurfaceSlope& slope() const { return *slope_; }
+
+ private:
+  std::shared_ptr<const detail::SurfaceSlope> slope_;
+  double b1_, E_;
+};
+
+// One contact zone of the period [-b1, b1). A zone around the valley x = +-b1 is listed
+// once, from x_start to x_end = 2 b1 - x_start > b1 (it crosses the period's end).
+struct ContactZone {
+  double x_start, x_end;     // [length]
+  double load;               // the load it carries [pressure x length]
+  double max_pressure;       // [pressure]
+  double x_of_max_pressure;  // [length]
+};
+
+struct SolverOptions {
+  // The relative error estimate the result must meet (of the pressure, relative to its
+  // maximum, and of the zone ends, relative to the period); 1e-14 <= tolerance <= 1e-2.
+  double tolerance = 1e-10;
+  // Gauss-Legendre points per quadrature panel: 0 raises it from 16 by 4 until the error
+  // estimate (against the previous order) meets the tolerance; 4 <= order <= 64 fixes it
+  // (the estimate is then against order + 2).
+  int order = 0;
+};
+
+// The contact at one load.
+class Contact {
+ public:
+  double load() const { return P_; }  // P [pressure x length] per period
+  // The zones of the period [-b1, b1), in increasing x_start.
+  const std::vector<ContactZone>& zones() const { return zones_; }
+  int zones_per_period() const { return static_cast<int>(zones_.size()); }
+  bool full_contact() const { return full_; }
+  // The contact length over the period, 2a/L1 for one zone.
+  double contact_fraction() const { return fraction_; }
+  double max_pressure() const { return max_pressure_; }
+  double x_of_max_pressure() const { return x_of_max_; }
+
+  // p(x) [pressure] and the gap [length] at any x (periodic): 0 off the zones, 0 on them.
+  double pressure(double x) const;
+  void pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
+  double gap(double x) const;
+
+  // The estimated relative error of the pressure (to max_pressure()) and of the zone ends
+  // (to the period 2 b1): the larger of the change from the previous quadrature order and
+  // the rounding error.
+  double error_estimate() const { return error_estimate_; }
+  // The Gauss-Legendre order per panel of the quadrature.
+  int quadrature_order() const { return order_; }
+
+ private:
+  friend std::vector<Contact> solve_contact(const Surface&, const std::vector<double>&, const SolverOptions&);
+  std::shared_ptr<const detail::IntervalInversion> inversion_;
+  double b1_ = 0, P_ = 0, fraction_ = 0, max_pressure_ = 0, x_of_max_ = 0;
+  double error_estimate_ = 0;
+  int order_ = 0;
+  bool full_ = false;
+  std::vector<ContactZone> zones_;
+};
+
+// The contact carrying the load P > 0 [pressure x length] per period.
+Contact solve_contact(const Surface& surface, double P, const SolverOptions& options = {});
+
+// The contacts carrying each load (any order), by one continuation through them in
+// increasing load: cheaper than one call per load.
+std::vector<Contact> solve_contact(const Surface& surface, const std::vector<double>& loads,
+                                   const SolverOptions& options = {});
+
+// The load [pressure x length] from which the contact is full (p >= 0 everywhere with no gap).
+double full_contact_load(const Surface& surface);
+
+// Whether one zone |x| < a per period, with the pressure of eq. 12 for it, is the contact:
+// p >= 0 on it and gap >= 0 off it (0 < a < b1).
+struct SingleZoneCheck {
+  bool solution;
+  double lowest_gap, x_of_lowest_gap;            // [length]; lowest_gap < 0: penetration
+  double lowest_pressure, x_of_lowest_pressure;  // [pressure]
+};
+SingleZoneCheck single_zone_check(const Surface& surface, double a);
+
+}  // namespace wavecontact

@@ -1,0 +1,471 @@
+#include "contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include <Eigen/Dense>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/tools/minima.hpp>
+
+namespace wavecontact::detail {
+
+namespace {
+
+constexpr double pi = boost::math::double_constants::pi;
+constexpr double two_pi = boost::math::double_constants::two_pi;
+// While continuing, the quadrature and Newton's method need only find the zones (to about
+// 1e-9); the final orders polish the ends (first_order, then order_step more until the
+// estimate meets the tolerance).
+constexpr int continuation_order = 8;
+constexpr double continuation_residual = 1e-10;
+constexpr int first_order = 12, order_step = 4, last_order = 40;
+constexpr int newton_iterations = 30;
+constexpr double residual_tolerance = 1e-14;  // residuals are relative to their terms
+constexpr double pressure_tolerance = 1e-9;   // p >= -this * max p on the zones
+constexpr double penetration_tolerance = 1e-9;  // gap >= -this * (max y - min y) off them
+constexpr int topology_changes = 16;
+constexpr double smallest_step = 1e-9;
+
+// Every end of the zones in increasing x^, with 0 and pi around them.
+std::vector<double> all_ends(const std::vector<Zone>& zones) {
+  std::vector<double> ends{0};
+  for (const Zone& z : zones) ends.push_back(z.lo), ends.push_back(z.hi);
+  ends.push_back(pi);
+  return ends;
+}
+
+bool same_topology(const std::vector<Zone>& a, const std::vector<Zone>& b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if ((a[k].lo == 0) != (b[k].lo == 0) || (a[k].hi == pi) != (b[k].hi == pi)) return false;
+  }
+  return true;
+}
+
+// The zones with the penetrated regions added (overlapping ones merged).
+std::vector<Zone> with_zones(std::vector<Zone> zones, const std::vector<Zone>& added) {
+  zones.insert(zones.end(), added.begin(), added.end());
+  std::sort(zones.begin(), zones.end(), [](const Zone& a, const Zone& b) { return a.lo < b.lo; });
+  std::vector<Zone> merged;
+  for (const Zone& z : zones) {
+    if (!merged.empty() && z.lo <= merged.back().hi) {
+      merged.back().hi = std::max(merged.back().hi, z.hi);
+    } else {
+      merged.push_back(z);
+    }
+  }
+  return merged;
+}
+
+// The highest point (x^) and the height range of the surface: a scan refined by Brent's method.
+struct HeightScan {
+  double top_angle, range;
+};
+
+HeightScan scan_height(const SurfaceSlope& surface) {
+  const int samples = std::max(512, static_cast<int>(16 * pi / surface.resolution));
+  auto height = [&](double x) { return surface.height(std::cos(x)); };
+  double highest = -std::numeric_limits<double>::infinity(), lowest = -highest;
+  int best = 0;
+  for (int i = 0; i <= samples; ++i) {
+    const double y = height(pi * i / samples);
+    if (y > highest) highest = y, best = i;
+    lowest = std::min(lowest, y);
+  }
+  HeightScan scan{pi * best / samples, 0};
+  if (best > 0 && best < samples) {
+    const auto [x, y] = boost::math::tools::brent_find_minima(
+        [&](double x) { return -height(x); }, pi * (best - 1) / samples, pi * (best + 1) / samples, 52);
+    scan.top_angle = x;
+    highest = std::max(highest, -y);
+  }
+  scan.range = highest - lowest;
+  return scan;
+}
+
+}  // namespace
+
+ContactSolver::ContactSolver(SurfaceSlope surface, double tolerance, int order)
+    : surface_(std::move(surface)), tolerance_(tolerance), fixed_order_(order) {
+  const HeightScan scan = scan_height(surface_);
+  top_angle_ = scan.top_angle;
+  height_range_ = scan.range;
+  // Full contact: p = C - S with C fixed by the load, so p = P/(2 pi) + p0 and the onset is
+  // -2 pi min p0.
+  IntervalInversion full(surface_, {{0, pi}}, continuation_order, IntervalInversion::Grading::evaluation);
+  full.prepare(0);
+  double p0 = std::numeric_limits<double>::infinity(), x0 = 0;
+  for (const auto& s : full.pressure_samples()) {
+    if (s.value < p0) p0 = s.value, x0 = s.x;
+  }
+  const double h = surface_.resolution / 4;
+  const double p_min = boost::math::tools::brent_find_minima(
+      [&](double x) { return full.pressure(x); }, std::max(0.0, x0 - h), std::min(pi, x0 + h), 52).second;
+  full_contact_load_ = std::max(0.0, -two_pi * std::min(p0, p_min));
+}
+
+ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, double P, int order,
+                                                  double tolerance, Eigen::MatrixXd& J) const {
+  // One panel layout for every iterate: the discrete conditions are then smooth in the ends.
+  const IntervalInversion start(surface_, zones, order);
+  const std::shared_ptr<IntervalInversion::Layout> layout = start.layout();
+  std::vector<double> x = start.free_ends();
+  const auto n = static_cast<Eigen::Index>(x.size());
+  if (n == 0) return {Outcome::converged, zones};
+  auto residual = [&](const std::vector<double>& ends) {
+    const std::vector<double> r = IntervalInversion(surface_, IntervalInversion::with_free_ends(zones, ends), order,
+                                                    IntervalInversion::Grading::quadrature, layout)
+                                      .residuals(P);
+    return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(r.data(), n));
+  };
+  // The Jacobian by forward differences, each end moved by a small part of the shorter
+  // stretch (zone or gap) next to it.
+  auto differences = [&](const std::vector<double>& at, const Eigen::VectorXd& r_at) {
+    const std::vector<double> ends = all_ends(IntervalInversion::with_free_ends(zones, at));
+    Eigen::MatrixXd D(n, n);
+    Eigen::Index j = 0;
+    for (std::size_t e = 1; e + 1 < ends.size(); ++e) {
+      if (ends[e] == 0 || ends[e] == pi) continue;
+      const double h = 1e-7 * std::min(ends[e] - ends[e - 1], ends[e + 1] - ends[e]);
+      std::vector<double> moved = at;
+      moved[static_cast<std::size_t>(j)] += h;
+      D.col(j++) = (residual(moved) - r_at) / h;
+    }
+    return D;
+  };
+  Eigen::VectorXd r = residual(x);
+  bool fresh = J.rows() != n || J.cols() != n;
+  if (fresh) J = differences(x, r);
+  for (int iteration = 0; iteration < newton_iterations; ++iteration) {
+    const std::vector<Zone> current = IntervalInversion::with_free_ends(zones, x);
+    if (r.lpNorm<Eigen::Infinity>() < tolerance) return {Outcome::converged, current};
+    const Eigen::VectorXd delta = J.fullPivLu().solve(-r);
+    if (!delta.allFinite()) return {Outcome::failed, current};
+    // Damped so that every stretch keeps a tenth of its length; a stretch that would close
+    // is an event: a gap between zones (merge), or the stretch to the top or the valley.
+    const std::vector<double> ends = all_ends(current);
+    std::vector<double> change(ends.size(), 0.0);
+    for (std::size_t e = 1, j = 0; e + 1 < ends.size(); ++e) {
+      if (ends[e] != 0 && ends[e] != pi) change[e] = delta[static_cast<Eigen::Index>(j++)];
+    }
+    double lambda = 1;
+    std::size_t limiting = 0;
+    for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
+      const double length = ends[e + 1] - ends[e], shrink = change[e] - change[e + 1];
+      if (length > 0 && shrink > 0 && lambda * shrink > 0.9 * length) {
+        lambda = 0.9 * length / shrink;
+        limiting = e;
+      }
+    }
+    if (lambda < 1) {
+      // ends[limiting] .. ends[limiting + 1] is closing: 0..lo of the first zone (top),
+      // hi..pi of the last (valley), or hi of zone k .. lo of zone k + 1 (merge).
+      const double remaining = (ends[limiting + 1] - ends[limiting]) -
+                               lambda * (change[limiting] - change[limiting + 1]);
+      if (remaining < 1e-6 * pi || lambda < 1e-3) {
+        if (limiting == 0) return {Outcome::top, current};
+        if (limiting == ends.size() - 2) return {Outcome::valley, current};
+        if (limiting % 2 == 0) return {Outcome::merge, current, limiting / 2 - 1};
+        return {Outcome::failed, current};  // a zone would vanish
+      }
+    }
+    std::vector<double> next = x;
+    for (Eigen::Index i = 0; i < n; ++i) next[static_cast<std::size_t>(i)] += lambda * delta[i];
+    const Eigen::VectorXd r_next = residual(next);
+    if (r_next.lpNorm<Eigen::Infinity>() < r.lpNorm<Eigen::Infinity>()) {
+      // Broyden's update of the Jacobian along the step.
+      Eigen::VectorXd s(n);
+      for (Eigen::Index i = 0; i < n; ++i) s[i] = next[static_cast<std::size_t>(i)] - x[static_cast<std::size_t>(i)];
+      J += ((r_next - r) - J * s) * s.transpose() / s.squaredNorm();
+      const bool stalled = s.lpNorm<Eigen::Infinity>() < 1e-14 * pi && r_next.lpNorm<Eigen::Infinity>() < 1e-9;
+      x = std::move(next), r = r_next, fresh = false;
+      if (stalled) return {Outcome::converged, IntervalInversion::with_free_ends(zones, x)};
+    } else if (!fresh) {
+      J = differences(x, r), fresh = true;  // the Jacobian was stale
+    } else {
+      return {Outcome::failed, current};
+    }
+  }
+  return {Outcome::failed, zones};
+}
+
+std::optional<ContactSolver::State> ContactSolver::settle(std::vector<Zone> zones, double P,
+                                                          Eigen::MatrixXd jacobian) const {
+  for (int change = 0; change < topology_changes; ++change) {
+    const NewtonResult result = newton(zones, P, continuation_order, continuation_residual, jacobian);
+    zones = result.zones;
+    switch (result.outcome) {
+      case Outcome::converged: {
+        auto inversion = std::make_shared<IntervalInversion>(surface_, zones, continuation_order,
+                                                             IntervalInversion::Grading::evaluation);
+        inversion->prepare(P);
+        return State{zones, P, std::move(jacobian), std::move(inversion)};
+      }
+      case Outcome::merge:
+        zones[result.index].hi = zones[result.index + 1].hi;
+        zones.erase(zones.begin() + static_cast<std::ptrdiff_t>(result.index) + 1);
+        break;
+      case Outcome::top:
+        zones.front().lo = 0;
+        break;
+      case Outcome::valley:
+        zones.back().hi = pi;
+        break;
+      case Outcome::failed:
+        return std::nullopt;
+    }
+    jacobian.resize(0, 0);
+  }
+  return std::nullopt;
+}
+
+ContactSolver::Check ContactSolver::check(const IntervalInversion& inversion) const {
+  Check result{true, {}};
+  double highest = 0, lowest = 0;
+  for (const auto& s : inversion.pressure_samples()) {
+    highest = std::max(highest, s.value), lowest = std::min(lowest, s.value);
+  }
+  result.pressure_ok = !(lowest < -pressure_tolerance * highest);
+  std::vector<IntervalInversion::Sample> gaps = inversion.gap_samples();
+  std::sort(gaps.begin(), gaps.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  const double floor = -penetration_tolerance * height_range_;
+  for (std::size_t i = 0; i < gaps.size(); ++i) {
+    if (!(gaps[i].value < floor)) continue;
+    std::size_t j = i, deepest = i;
+    while (j + 1 < gaps.size() && gaps[j + 1].value < floor) {
+      if (gaps[++j].value < gaps[deepest].value) deepest = j;
+    }
+    // The stretch where the gap is negative, to its zero crossings (linear between the
+    // samples; a region ends at a zone end, where the gap is 0), or to the top or the valley.
+    auto crossing = [&](std::size_t inside, std::size_t outside) {
+      const double a = gaps[outside].value, b = gaps[inside].value;
+      return gaps[outside].x + (gaps[inside].x - gaps[outside].x) * a / (a - b);
+    };
+    const double x0 = gaps[deepest].x;
+    double lo = i > 0 ? crossing(i, i - 1) : 0, hi = j + 1 < gaps.size() ? crossing(j, j + 1) : pi;
+    // A zone starts somewhat inside the stretch penetrated at this load.
+    lo = lo <= 0 ? 0 : x0 - 0.7 * (x0 - lo);
+    hi = hi >= pi ? pi : x0 + 0.7 * (hi - x0);
+    if (!(hi > lo)) lo = std::max(0.0, x0 - 1e-9), hi = std::min(pi, x0 + 1e-9);
+    result.penetrations.push_back({{lo, hi}, x0, gaps[deepest].value});
+    i = j;
+  }
+  return result;
+}
+
+std::optional<ContactSolver::State> ContactSolver::single_zone(double P) const {
+  if (top_angle_ != 0) return std::nullopt;
+  // From a small zone, scaled as in Hertz's contact (a^2 ~ P).
+  const double a0 = std::min(0.05, surface_.resolution / 8);
+  const double P0 = 2 * IntervalInversion(surface_, {{0, a0}}, continuation_order).half_load();
+  if (!(P0 > 0)) return std::nullopt;
+  std::optional<State> state = settle({{0, std::min(0.9 * pi, a0 * std::sqrt(P / P0))}}, P, {});
+  if (!state) return std::nullopt;
+  const Check c = check(*state->inversion);
+  if (!c.pressure_ok || !c.penetrations.empty()) return std::nullopt;
+  return state;
+}
+
+ContactSolver::State ContactSolver::seed(double P) const {
+  // A small zone at the highest point carrying at most P.
+  double width = std::min(0.05, surface_.resolution / 8);
+  for (int attempt = 0; attempt < 200; ++attempt, width /= 4) {
+    std::vector<Zone> zones;
+    if (top_angle_ < width) {
+      zones = {{0, width}};
+    } else if (top_angle_ > pi - width) {
+      zones = {{pi - width, pi}};
+    } else {
+      // Centred so that the pressure is bounded at both ends: Newton on the centre alone.
+      double centre = top_angle_;
+      for (int i = 0; i < 30; ++i) {
+        auto r = [&](double c) {
+          return IntervalInversion(surface_, {{c - width, c + width}}, continuation_order).residuals(1)[0];
+        };
+        const double h = 1e-7 * width, r0 = r(centre), slope = (r(centre + h) - r0) / h;
+        const double step = std::clamp(-r0 / slope, -width / 2, width / 2);
+        centre = std::clamp(centre + step, width * 1.01, pi - width * 1.01);
+        if (std::fabs(step) < 1e-14 * width) break;
+      }
+      zones = {{centre - width, centre + width}};
+    }
+    const double load = 2 * IntervalInversion(surface_, zones, continuation_order).half_load();
+    if (load > 0 && load <= P) {
+      auto inversion = std::make_shared<IntervalInversion>(surface_, zones, continuation_order,
+                                                           IntervalInversion::Grading::evaluation);
+      inversion->prepare(load);
+      return {zones, load, {}, std::move(inversion)};
+    }
+  }
+  throw std::runtime_error("wavecontact::solve_contact: no small contact zone carries the load " + std::to_string(P));
+}
+
+std::optional<ContactSolver::State> ContactSolver::advance(const State& from, double P,
+                                                           const State* before) const {
+  std::vector<Zone> guess = from.zones;
+  if (before && same_topology(before->zones, from.zones) && from.P != before->P) {
+    // Secant predictor for the free ends.
+    const double t = (P - from.P) / (from.P - before->P);
+    std::vector<double> a = IntervalInversion(surface_, before->zones, continuation_order).free_ends();
+    std::vector<double> b = IntervalInversion(surface_, from.zones, continuation_order).free_ends();
+    for (std::size_t i = 0; i < a.size(); ++i) b[i] += t * (b[i] - a[i]);
+    const std::vector<double> ends = all_ends(IntervalInversion::with_free_ends(from.zones, b));
+    if (std::is_sorted(ends.begin(), ends.end()) && std::adjacent_find(ends.begin(), ends.end()) == ends.end()) {
+      guess = IntervalInversion::with_free_ends(from.zones, b);
+    }
+  }
+  double target = P;
+  for (int approach = 0; approach < 8; ++approach) {
+    std::optional<State> state = settle(guess, target, from.jacobian);
+    if (!state) return std::nullopt;
+    Check c = check(*state->inversion);
+    if (!c.pressure_ok) return std::nullopt;
+    if (c.penetrations.empty()) return state;
+    // The earliest event: where the gap at the deepest point of a penetration reaches 0,
+    // by the secant between this load and the last admissible one.
+    double event = target;
+    for (const Penetration& p : c.penetrations) {
+      const double g0 = from.inversion->gap(p.x);
+      if (g0 > 0) event = std::min(event, from.P + (target - from.P) * g0 / (g0 - p.depth));
+    }
+    if (event > from.P && target - event > 0.05 * (target - from.P)) {
+      target = event + 0.02 * (target - event);  // just past it
+      continue;
+    }
+    // Just past the event: the new zones start where the gap is negative.
+    for (int opening = 0; opening < 4 && !c.penetrations.empty(); ++opening) {
+      std::vector<Zone> added;
+      for (const Penetration& p : c.penetrations) added.push_back(p.zone);
+      state = settle(with_zones(state->zones, added), target, {});
+      if (!state) return std::nullopt;
+      c = check(*state->inversion);
+      if (!c.pressure_ok) return std::nullopt;
+    }
+    if (c.penetrations.empty()) return state;
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+SolvedContact ContactSolver::refine(const State& state) const {
+  std::vector<Zone> zones = state.zones;
+  Eigen::MatrixXd jacobian = state.jacobian;
+  auto solve_at = [&](int order) {
+    const NewtonResult result = newton(zones, state.P, order, residual_tolerance, jacobian);
+    if (result.outcome != Outcome::converged) {
+      throw std::runtime_error("wavecontact::solve_contact: Newton's method did not converge at order " +
+                               std::to_string(order) + " for the load " + std::to_string(state.P));
+    }
+    zones = result.zones;
+    auto prepared = std::make_shared<IntervalInversion>(surface_, zones, order, IntervalInversion::Grading::evaluation);
+    prepared->prepare(state.P);
+    return prepared;
+  };
+  // The estimate of a against b: ends (to the period) and pressure (to its largest), and
+  // a's rounding error.
+  auto estimate = [](const IntervalInversion& a, const IntervalInversion& b) {
+    const std::vector<double> ea = a.free_ends(), eb = b.free_ends();
+    double highest = 0, worst = 0;
+    for (const auto& s : a.pressure_samples()) highest = std::max(highest, std::fabs(s.value));
+    for (std::size_t i = 0; i < ea.size(); ++i) worst = std::max(worst, std::fabs(ea[i] - eb[i]) / pi);
+    // Between a's samples (its interpolation points, where its tables are exact), inside
+    // both solutions' zones.
+    std::vector<IntervalInversion::Sample> samples = a.pressure_samples();
+    std::sort(samples.begin(), samples.end(), [](const auto& u, const auto& v) { return u.x < v.x; });
+    for (std::size_t i = 1; i < samples.size(); ++i) {
+      const double x = (samples[i - 1].x + samples[i].x) / 2, p = a.pressure(x), q = b.pressure(x);
+      if (p == 0 || q == 0) continue;
+      worst = std::max(worst, std::fabs(q - p) / highest);
+      if (i % 3 == 0) worst = std::max(worst, a.rounding_amplification(x) * std::fabs(p) / highest);
+    }
+    return worst;
+  };
+  if (fixed_order_ > 0) {  // against the next order, order + 2
+    auto result = solve_at(fixed_order_);
+    const std::vector<Zone> at_order = zones;
+    const double error = estimate(*result, *solve_at(fixed_order_ + 2));
+    return {at_order, state.P, fixed_order_, error, result};
+  }
+  // 12, 16, ... until the change from the previous order meets the tolerance.
+  std::shared_ptr<const IntervalInversion> previous = solve_at(first_order);
+  for (int order = first_order + order_step;; order += order_step) {
+    auto current = solve_at(order);
+    const double error = estimate(*current, *previous);
+    if (error <= tolerance_ || order + order_step > last_order) return {zones, state.P, order, error, current};
+    previous = std::move(current);
+  }
+}
+
+std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads) const {
+  std::vector<std::size_t> order(loads.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return loads[a] < loads[b]; });
+  std::vector<SolvedContact> solved(loads.size());
+  std::optional<State> state, before;
+  for (std::size_t index : order) {
+    const double target = loads[index];
+    if (target >= full_contact_load_) {
+      solved[index] = refine({{{0, pi}}, target, {}, nullptr});
+      continue;
+    }
+    if (!state) {
+      if (std::optional<State> direct = single_zone(target)) {
+        solved[index] = refine(*direct);
+        continue;
+      }
+      state = seed(target);
+    }
+    double ratio = 1;  // the next load is at most (1 + ratio) times the last
+    while (state->P < target) {
+      const double next = std::min(target, state->P * (1 + ratio));
+      std::optional<State> reached = advance(*state, next, before ? &*before : nullptr);
+      if (!reached) {
+        ratio /= 4;
+        if (ratio < smallest_step) {
+          throw std::runtime_error("wavecontact::solve_contact: the continuation stalled at P = " +
+                                   std::to_string(state->P) + " on the way to " + std::to_string(target));
+        }
+        continue;
+      }
+      if (same_topology(reached->zones, state->zones)) {
+        before = std::move(state);
+      } else {
+        before.reset();
+      }
+      const bool full_step = reached->P == next;
+      state = std::move(reached);
+      if (full_step) ratio = std::min(4.0, ratio * 2);
+    }
+    solved[index] = refine(*state);
+  }
+  return solved;
+}
+
+SingleZoneResult check_single_zone(const SurfaceSlope& surface, double a) {
+  IntervalInversion inversion(surface, {{0, a}}, first_order, IntervalInversion::Grading::evaluation);
+  inversion.prepare(2 * inversion.half_load());
+  SingleZoneResult result{true, 0, 0, 0, 0};
+  double highest = 0;
+  for (const auto& s : inversion.pressure_samples()) {
+    highest = std::max(highest, s.value);
+    if (s.value < result.lowest_pressure) result.lowest_pressure = s.value, result.x_of_lowest_pressure = s.x;
+  }
+  const auto& gaps = inversion.gap_samples();
+  const auto lowest = std::min_element(gaps.begin(), gaps.end(),
+                                       [](const auto& u, const auto& v) { return u.value < v.value; });
+  if (lowest != gaps.end() && lowest->value < 0) {  // the bottom, by Brent's method
+    result.lowest_gap = lowest->value, result.x_of_lowest_gap = lowest->x;
+    const double h = surface.resolution / 4;
+    const auto [x, g] = boost::math::tools::brent_find_minima(
+        [&](double x) { return inversion.gap(x); }, std::max(a, lowest->x - h), std::min(pi, lowest->x + h), 52);
+    if (g < result.lowest_gap) result.lowest_gap = g, result.x_of_lowest_gap = x;
+  }
+  result.solution = !(result.lowest_pressure < -pressure_tolerance * highest) &&
+                    !(result.lowest_gap < -penetration_tolerance * scan_height(surface).range);
+  return result;
+}
+
+}  // namespace wavecontact::detail

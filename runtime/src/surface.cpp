@@ -1,0 +1,98 @@
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/chebyshev.hpp>
+
+#include "interval_inversion.hpp"
+#include "validate.hpp"
+#include "wavecontact/angles.hpp"
+#include "wavecontact/contact.hpp"
+#include "wavecontact/two_scale.hpp"
+#include "waviness.hpp"  // generated/
+
+namespace wavecontact {
+
+namespace {
+
+constexpr double pi = boost::math::double_constants::pi;
+
+// The smallest panel extent in x^ for a surface whose highest harmonic is n.
+double resolution(int n) { return pi / std::max(4, n); }
+
+}  // namespace
+
+Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness) : b1_(w.b1), E_(w.E) {
+  constexpr const char* function = "wavecontact::Surface";
+  validate(w, function);
+  int highest = 0;
+  for (const Harmonic& h : roughness) {
+    detail::require_finite(function, "H", h.H);
+    if (h.n < 1 || h.n > max_roughness_n) {
+      detail::domain_error(function, "n", h.n, "1 <= n <= " + std::to_string(max_roughness_n));
+    }
+    highest = std::max(highest, h.n);
+  }
+  auto s = std::make_shared<detail::SurfaceSlope>();
+  const double H1 = w.H1, m = w.m;
+  // Eq. 2 is odd in s = cos x^ (its |cos| branch): Y(s) = sign(s) Y(|s|), Y'(s) = Y'(|s|);
+  // a harmonic is H T_n(s), with dT_n/ds = n U_(n-1)(s).
+  s->height = [=](double c) {
+    double y = std::copysign(generated::waviness_height(H1, m, std::fabs(c)), c);
+    for (const Harmonic& h : roughness) y += h.H * boost::math::chebyshev_t(static_cast<unsigned>(h.n), c);
+    return y;
+  };
+  s->slope = [=](double c) {
+    double slope = generated::waviness_height_slope(H1, m, std::fabs(c));
+    for (const Harmonic& h : roughness) {
+      slope += h.H * h.n * boost::math::chebyshev_u(static_cast<unsigned>(h.n - 1), c);
+    }
+    return slope;
+  };
+  if (m > 0) {
+    s->kinks = {0};  // x = b1/2, where eq. 2 changes branch
+    // Each branch continued across the kink has its pole at cos x^ = -+1/m (MATH.md fact 8).
+    s->singularities = [m](double lo, double /*hi*/) {
+      return std::vector<std::complex<double>>{lo >= 0 ? -1 / m : 1 / m};
+    };
+  }
+  s->resolution = resolution(highest);
+  s->E = w.E;
+  slope_ = std::move(s);
+}
+
+Surface::Surface(const TwoScaleParams& params)
+    : Surface((validate(params.roughness, "wavecontact::Surface"), params.waviness),
+              {{params.roughness.H2, params.roughness.n}}) {}
+
+Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.params().E) {
+  if (profile.reach() < profile.params().b1) {
+    detail::domain_error("wavecontact::Surface", "x", profile.reach(),
+                         "a profile without a pole on the period; " + profile.params().name +
+                             " has one at this x, where it is unbounded");
+  }
+  const ProfileEvaluator e = profile.evaluator();
+  const std::vector<double> q = profile.parameter_values();
+  auto s = std::make_shared<detail::SurfaceSlope>();
+  s->height = [e, q](double c) { return e.height(q.data(), c); };
+  s->slope = [e, q](double c) { return e.height_slope(q.data(), c); };
+  // The poles tau = tan^2(x^/2) off the period are at s = (1 - tau)/(1 + tau).
+  std::vector<double> tau(static_cast<std::size_t>(e.pole_count));
+  e.pole_squares(q.data(), tau.data());
+  std::vector<std::complex<double>> poles;
+  for (double t : tau) {
+    if (std::isfinite(t) && t != -1) poles.emplace_back((1 - t) / (1 + t));
+  }
+  s->singularities = [poles](double, double) { return poles; };
+  s->resolution = resolution(e.harmonic);
+  s->E = profile.params().E;
+  slope_ = std::move(s);
+}
+
+double Surface::height(double x) const {
+  detail::require_finite("wavecontact::Surface::height", "x", x);
+  return slope_->height(std::cos(pi * reduce_to_period(x, b1_) / b1_));
+}
+
+}  // namespace wavecontact
