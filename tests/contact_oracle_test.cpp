@@ -125,6 +125,15 @@ BOOST_AUTO_TEST_CASE(small_roughness_above_the_peak_load) {
   }
 }
 
+// The wave curve with two harmonics, n = 8 and 64: many zones.
+BOOST_AUTO_TEST_CASE(two_harmonics) {
+  const double P = 0.3 * pi;
+  const Contact c = solve_contact(Surface(WavinessParams{1, 10, 0, 1}, {{0.15, 8}, {0.02, 64}}), P);
+  const BemEstimate bem = test::bem_extrapolated(
+      [](double x) { return std::cos(x) + 0.15 * std::cos(8 * x) + 0.02 * std::cos(64 * x); }, 1.0, P, grid);
+  compare(c, bem, 10, "n = 8 and 64, pa/p* = 0.3");
+}
+
 // H1 cos x + H3 cos 3x with H3 < -H1/9: a dimple at the top, contact on its two sides.
 BOOST_AUTO_TEST_CASE(dimpled_profile) {
   const Profile profile({"two_harmonic", {{"H1", 1.0}, {"H3", -0.2}}, 10.0, 1.0});

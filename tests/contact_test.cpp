@@ -285,6 +285,28 @@ BOOST_AUTO_TEST_CASE(convergence_is_geometric) {
   }
 }
 
+// Several harmonics: the waviness with n = 8 and n = 64 roughness, many zones per period.
+BOOST_AUTO_TEST_CASE(several_harmonics) {
+  const Surface s(WavinessParams{1, 10, 0, 1}, {{0.15, 8}, {0.02, 64}});
+  const std::vector<Contact> sweep = solve_contact(s, {0.05 * pi, 0.5 * pi});
+  BOOST_TEST(sweep[0].zones_per_period() >= 3);
+  BOOST_TEST(sweep[1].zones_per_period() > sweep[0].zones_per_period());
+  BOOST_TEST(sweep[1].error_estimate() < 1e-10);
+  check_contact(sweep[1], 10, "n = 8 and 64, pa/p* = 0.5");
+}
+
+// Many small zones clustered near the top (n = 256): the several-interval formula multiplies
+// the distances between all zone ends and would lose every digit; refused, not answered.
+BOOST_AUTO_TEST_CASE(clusters_beyond_reach_are_refused) {
+  const Surface s(TwoScaleParams{{1, 10, 2, 1}, {0.02, 256}});
+  try {
+    solve_contact(s, 0.5 * pi);
+    BOOST_TEST(false, "solved a contact beyond the solver's conditioning");
+  } catch (const std::domain_error& e) {
+    BOOST_TEST(std::string(e.what()).find("beyond the solver's range") != std::string::npos, e.what());
+  }
+}
+
 BOOST_AUTO_TEST_CASE(invalid_input_is_refused) {
   const Surface s(WavinessParams{1, 10, 2, 1});
   for (double P : {0.0, -1.0, std::nan(""), HUGE_VAL}) {

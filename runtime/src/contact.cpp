@@ -118,8 +118,8 @@ SingleZoneCheck single_zone_check(const Surface& surface, double a) {
   }
   const detail::SingleZoneResult r = detail::check_single_zone(surface.slope(), pi * a / surface.b1());
   const double to_x = surface.b1() / pi;
-  return {r.solution, r.lowest_gap, r.x_of_lowest_gap * to_x, r.lowest_pressure * pi / surface.b1(),
-          r.x_of_lowest_pressure * to_x};
+  return {r.solution, r.penetrates, r.lowest_gap, r.x_of_lowest_gap * to_x,
+          r.lowest_pressure * pi / surface.b1(), r.x_of_lowest_pressure * to_x};
 }
 
 }  // namespace wavecontact

@@ -1,10 +1,12 @@
 #include "contact_solver.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 
 #include <Eigen/Dense>
 #include <boost/math/constants/constants.hpp>
@@ -24,9 +26,15 @@ constexpr double continuation_residual = 1e-10;
 constexpr int first_order = 12, order_step = 4, last_order = 40;
 constexpr int newton_iterations = 30;
 constexpr double residual_tolerance = 1e-14;  // residuals are relative to their terms
+constexpr double stagnation_floor = 1e-9;      // below it, a stalled Newton step is rounding
 constexpr double pressure_tolerance = 1e-9;   // p >= -this * max p on the zones
 constexpr double penetration_tolerance = 1e-9;  // gap >= -this * (max y - min y) off them
 constexpr int topology_changes = 16;
+constexpr int max_zones = 64;  // in half a period
+constexpr double merge_ratio = 1e-2;  // a gap this much narrower than its zones may merge
+constexpr double rounding_limit = 1e-8;  // of the pressure: beyond it the zones cannot be resolved
+// A new zone starts about this wide (x^) relative to the surface's resolution.
+constexpr double birth_width = 1.0 / 64;
 constexpr double smallest_step = 1e-9;
 
 // Every end of the zones in increasing x^, with 0 and pi around them.
@@ -86,6 +94,29 @@ HeightScan scan_height(const SurfaceSlope& surface) {
   return scan;
 }
 
+// The local minima of f (x^ in [0, pi]) from its samples: every sample lower than its
+// neighbours (or an end sample lower than its one neighbour), refined by Brent's method
+// between them. A dip narrower than the samples' spacing shows as its nearest sample.
+template <typename F>
+std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversion::Sample> samples, const F& f) {
+  std::sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  std::vector<IntervalInversion::Sample> minima;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const bool below_left = i == 0 || samples[i].value < samples[i - 1].value;
+    const bool below_right = i + 1 == samples.size() || samples[i].value < samples[i + 1].value;
+    if (!below_left || !below_right) continue;
+    const double a = i > 0 ? samples[i - 1].x : samples[i].x;
+    const double b = i + 1 < samples.size() ? samples[i + 1].x : samples[i].x;
+    IntervalInversion::Sample best = samples[i];
+    if (b > a) {
+      const auto [x, value] = boost::math::tools::brent_find_minima(f, a, b, 40);
+      if (value < best.value) best = {x, value};
+    }
+    minima.push_back(best);
+  }
+  return minima;
+}
+
 }  // namespace
 
 ContactSolver::ContactSolver(SurfaceSlope surface, double tolerance, int order)
@@ -109,12 +140,21 @@ ContactSolver::ContactSolver(SurfaceSlope surface, double tolerance, int order)
 
 ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, double P, int order,
                                                   double tolerance, Eigen::MatrixXd& J) const {
-  // One panel layout for every iterate: the discrete conditions are then smooth in the ends.
+  // One panel layout for the iterates, so that the discrete conditions are smooth in the
+  // ends; laid out afresh when a stretch (zone or gap) has changed by half or more, since its
+  // panels are graded for the stretches it was made for.
   const IntervalInversion start(surface_, zones, order);
-  const std::shared_ptr<IntervalInversion::Layout> layout = start.layout();
+  std::shared_ptr<IntervalInversion::Layout> layout = start.layout();
   std::vector<double> x = start.free_ends();
   const auto n = static_cast<Eigen::Index>(x.size());
   if (n == 0) return {Outcome::converged, zones};
+  auto stretches = [&](const std::vector<double>& ends) {
+    const std::vector<double> e = all_ends(IntervalInversion::with_free_ends(zones, ends));
+    std::vector<double> lengths;
+    for (std::size_t i = 0; i + 1 < e.size(); ++i) lengths.push_back(e[i + 1] - e[i]);
+    return lengths;
+  };
+  std::vector<double> laid_out = stretches(x);
   auto residual = [&](const std::vector<double>& ends) {
     const std::vector<double> r = IntervalInversion(surface_, IntervalInversion::with_free_ends(zones, ends), order,
                                                     IntervalInversion::Grading::quadrature, layout)
@@ -138,9 +178,20 @@ ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, doubl
   };
   Eigen::VectorXd r = residual(x);
   bool fresh = J.rows() != n || J.cols() != n;
+  std::size_t closing = static_cast<std::size_t>(-1);  // the stretch the last step overshot
   if (fresh) J = differences(x, r);
   for (int iteration = 0; iteration < newton_iterations; ++iteration) {
     const std::vector<Zone> current = IntervalInversion::with_free_ends(zones, x);
+    const std::vector<double> now = stretches(x);
+    for (std::size_t i = 0; i < now.size(); ++i) {
+      if (laid_out[i] > 0 && (now[i] > 1.5 * laid_out[i] || now[i] < laid_out[i] / 1.5)) {
+        layout = std::make_shared<IntervalInversion::Layout>();
+        laid_out = now;
+        r = residual(x);
+        J = differences(x, r), fresh = true;
+        break;
+      }
+    }
     if (r.lpNorm<Eigen::Infinity>() < tolerance) return {Outcome::converged, current};
     const Eigen::VectorXd delta = J.fullPivLu().solve(-r);
     if (!delta.allFinite()) return {Outcome::failed, current};
@@ -160,21 +211,29 @@ ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, doubl
         limiting = e;
       }
     }
-    if (lambda < 1) {
-      // ends[limiting] .. ends[limiting + 1] is closing: 0..lo of the first zone (top),
-      // hi..pi of the last (valley), or hi of zone k .. lo of zone k + 1 (merge).
-      const double remaining = (ends[limiting + 1] - ends[limiting]) -
-                               lambda * (change[limiting] - change[limiting + 1]);
-      if (remaining < 1e-6 * pi || lambda < 1e-3) {
-        if (limiting == 0) return {Outcome::top, current};
-        if (limiting == ends.size() - 2) return {Outcome::valley, current};
-        if (limiting % 2 == 0) return {Outcome::merge, current, limiting / 2 - 1};
-        return {Outcome::failed, current};  // a zone would vanish
-      }
+    // A full step that would close ends[limiting] .. ends[limiting + 1] twice running (the
+    // first steps from a new zone are not to be trusted that far), or a stretch already
+    // next to nothing, is an event: 0..lo of the first zone (top), hi..pi of the last
+    // (valley), or hi of zone k .. lo of zone k + 1 (merge).
+    const bool overshoots = lambda < 1 && change[limiting] - change[limiting + 1] >= ends[limiting + 1] - ends[limiting];
+    const bool again = overshoots && closing == limiting;
+    closing = overshoots ? limiting : ends.size();
+    const double remaining = (ends[limiting + 1] - ends[limiting]) - lambda * (change[limiting] - change[limiting + 1]);
+    if (again || (lambda < 1 && remaining < 1e-6 * pi)) {
+      if (limiting == 0) return {Outcome::top, current};
+      if (limiting == ends.size() - 2) return {Outcome::valley, current};
+      if (limiting % 2 == 0) return {Outcome::merge, current, limiting / 2 - 1};
+      return {Outcome::failed, current};  // a zone would vanish
     }
-    std::vector<double> next = x;
-    for (Eigen::Index i = 0; i < n; ++i) next[static_cast<std::size_t>(i)] += lambda * delta[i];
-    const Eigen::VectorXd r_next = residual(next);
+    // Backtracking along the step while the residuals grow (with a fresh Jacobian only).
+    std::vector<double> next;
+    Eigen::VectorXd r_next;
+    for (int halving = 0;; ++halving, lambda /= 2) {
+      next = x;
+      for (Eigen::Index i = 0; i < n; ++i) next[static_cast<std::size_t>(i)] += lambda * delta[i];
+      r_next = residual(next);
+      if (!fresh || halving == 6 || r_next.lpNorm<Eigen::Infinity>() < r.lpNorm<Eigen::Infinity>()) break;
+    }
     if (r_next.lpNorm<Eigen::Infinity>() < r.lpNorm<Eigen::Infinity>()) {
       // Broyden's update of the Jacobian along the step.
       Eigen::VectorXd s(n);
@@ -185,6 +244,8 @@ ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, doubl
       if (stalled) return {Outcome::converged, IntervalInversion::with_free_ends(zones, x)};
     } else if (!fresh) {
       J = differences(x, r), fresh = true;  // the Jacobian was stale
+    } else if (r.lpNorm<Eigen::Infinity>() < stagnation_floor) {
+      return {Outcome::converged, current};  // rounding: no step decreases the residuals
     } else {
       return {Outcome::failed, current};
     }
@@ -214,8 +275,21 @@ std::optional<ContactSolver::State> ContactSolver::settle(std::vector<Zone> zone
       case Outcome::valley:
         zones.back().hi = pi;
         break;
-      case Outcome::failed:
-        return std::nullopt;
+      case Outcome::failed: {
+        // Next to a gap much narrower than its zones, Newton may fail before the merge shows:
+        // merge the narrowest such gap (the pressure check then judges it).
+        std::size_t narrowest = zones.size();
+        double ratio = merge_ratio;
+        for (std::size_t k = 0; k + 1 < zones.size(); ++k) {
+          const double gap = zones[k + 1].lo - zones[k].hi;
+          const double zone = std::min(zones[k].hi - zones[k].lo, zones[k + 1].hi - zones[k + 1].lo);
+          if (gap < ratio * zone) ratio = gap / zone, narrowest = k;
+        }
+        if (narrowest == zones.size()) return std::nullopt;
+        zones[narrowest].hi = zones[narrowest + 1].hi;
+        zones.erase(zones.begin() + static_cast<std::ptrdiff_t>(narrowest) + 1);
+        break;
+      }
     }
     jacobian.resize(0, 0);
   }
@@ -223,35 +297,32 @@ std::optional<ContactSolver::State> ContactSolver::settle(std::vector<Zone> zone
 }
 
 ContactSolver::Check ContactSolver::check(const IntervalInversion& inversion) const {
-  Check result{true, {}};
-  double highest = 0, lowest = 0;
-  for (const auto& s : inversion.pressure_samples()) {
-    highest = std::max(highest, s.value), lowest = std::min(lowest, s.value);
+  if (inversion.rounding() > rounding_limit) {
+    throw std::domain_error(
+        "wavecontact::solve_contact: the contact reaches " + std::to_string(inversion.zones().size()) +
+        " zones in half a period, clustered so that rounding alone reaches " + std::to_string(inversion.rounding()) +
+        " of the pressure (the several-interval formula multiplies the distances between all zone ends): "
+        "beyond the solver's range; a smaller load or fewer, larger asperities are within it");
   }
-  result.pressure_ok = !(lowest < -pressure_tolerance * highest);
-  std::vector<IntervalInversion::Sample> gaps = inversion.gap_samples();
-  std::sort(gaps.begin(), gaps.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  Check result{true, {}};
+  double highest = 0;
+  for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+  const auto pressure = [&](double x) { return inversion.pressure(x); };
+  for (const IntervalInversion::Sample& m : local_minima(inversion.pressure_samples(), pressure)) {
+    result.pressure_ok = result.pressure_ok && !(m.value < -pressure_tolerance * highest);
+  }
   const double floor = -penetration_tolerance * height_range_;
-  for (std::size_t i = 0; i < gaps.size(); ++i) {
-    if (!(gaps[i].value < floor)) continue;
-    std::size_t j = i, deepest = i;
-    while (j + 1 < gaps.size() && gaps[j + 1].value < floor) {
-      if (gaps[++j].value < gaps[deepest].value) deepest = j;
-    }
-    // The stretch where the gap is negative, to its zero crossings (linear between the
-    // samples; a region ends at a zone end, where the gap is 0), or to the top or the valley.
-    auto crossing = [&](std::size_t inside, std::size_t outside) {
-      const double a = gaps[outside].value, b = gaps[inside].value;
-      return gaps[outside].x + (gaps[inside].x - gaps[outside].x) * a / (a - b);
-    };
-    const double x0 = gaps[deepest].x;
-    double lo = i > 0 ? crossing(i, i - 1) : 0, hi = j + 1 < gaps.size() ? crossing(j, j + 1) : pi;
-    // A zone starts somewhat inside the stretch penetrated at this load.
-    lo = lo <= 0 ? 0 : x0 - 0.7 * (x0 - lo);
-    hi = hi >= pi ? pi : x0 + 0.7 * (hi - x0);
-    if (!(hi > lo)) lo = std::max(0.0, x0 - 1e-9), hi = std::min(pi, x0 + 1e-9);
-    result.penetrations.push_back({{lo, hi}, x0, gaps[deepest].value});
-    i = j;
+  const auto gap = [&](double x) { return inversion.gap(x); };
+  for (const IntervalInversion::Sample& m : local_minima(inversion.gap_samples(), gap)) {
+    if (!(m.value < floor)) continue;
+    // The gap near its lowest point is a parabola; the zone starts at 0.7 of the stretch
+    // where it is negative (a Hertzian zone is narrower than the overlap).
+    const double h = std::min(surface_.resolution, pi) * 1e-3;
+    const double left = gap(std::max(0.0, m.x - h)), right = gap(std::min(pi, m.x + h));
+    const double curvature = ((m.x - h < 0 ? right : left) - 2 * m.value + (m.x + h > pi ? left : right)) / (h * h);
+    const double half = curvature > 0 ? 0.7 * std::sqrt(2 * -m.value / curvature) : h;
+    const double lo = m.x - half <= 0 ? 0 : m.x - half, hi = m.x + half >= pi ? pi : m.x + half;
+    result.penetrations.push_back({{lo, hi}, m.x, m.value, std::max(curvature, 0.0)});
   }
   return result;
 }
@@ -325,21 +396,32 @@ std::optional<ContactSolver::State> ContactSolver::advance(const State& from, do
     if (!c.pressure_ok) return std::nullopt;
     if (c.penetrations.empty()) return state;
     // The earliest event: where the gap at the deepest point of a penetration reaches 0,
-    // by the secant between this load and the last admissible one.
-    double event = target;
+    // by the secant between this load and the last admissible one. Well before the target,
+    // aim just past it, where the new zone would be about birth_width wide (the depth
+    // grows linearly with the load, the width like its root).
+    double event = target, aim = target;
     for (const Penetration& p : c.penetrations) {
       const double g0 = from.inversion->gap(p.x);
-      if (g0 > 0) event = std::min(event, from.P + (target - from.P) * g0 / (g0 - p.depth));
+      if (!(g0 > 0)) continue;
+      const double e = from.P + (target - from.P) * g0 / (g0 - p.depth);
+      if (e < event) {
+        const double width = birth_width * surface_.resolution;
+        const double birth_depth = 0.5 * p.curvature * width * width;
+        event = e;
+        aim = e + (target - e) * std::clamp(birth_depth / -p.depth, 0.02, 1.0);
+      }
     }
-    if (event > from.P && target - event > 0.05 * (target - from.P)) {
-      target = event + 0.02 * (target - event);  // just past it
+    if (event > from.P && target - event > 0.05 * (target - from.P) && aim < target) {
+      target = aim;
       continue;
     }
-    // Just past the event: the new zones start where the gap is negative.
-    for (int opening = 0; opening < 4 && !c.penetrations.empty(); ++opening) {
-      std::vector<Zone> added;
-      for (const Penetration& p : c.penetrations) added.push_back(p.zone);
-      state = settle(with_zones(state->zones, added), target, {});
+    // Just past the event: new zones start where the gap is negative, the deepest first
+    // (a zone often shields its neighbours), one at a time.
+    for (int opening = 0; opening < max_zones && !c.penetrations.empty(); ++opening) {
+      const Penetration& deepest = *std::min_element(
+          c.penetrations.begin(), c.penetrations.end(),
+          [](const Penetration& u, const Penetration& v) { return u.depth < v.depth; });
+      state = settle(with_zones(state->zones, {deepest.zone}), target, {});
       if (!state) return std::nullopt;
       c = check(*state->inversion);
       if (!c.pressure_ok) return std::nullopt;
@@ -447,24 +529,17 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
 SingleZoneResult check_single_zone(const SurfaceSlope& surface, double a) {
   IntervalInversion inversion(surface, {{0, a}}, first_order, IntervalInversion::Grading::evaluation);
   inversion.prepare(2 * inversion.half_load());
-  SingleZoneResult result{true, 0, 0, 0, 0};
+  SingleZoneResult result{true, false, 0, 0, 0, 0};
   double highest = 0;
-  for (const auto& s : inversion.pressure_samples()) {
-    highest = std::max(highest, s.value);
-    if (s.value < result.lowest_pressure) result.lowest_pressure = s.value, result.x_of_lowest_pressure = s.x;
+  for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+  for (const auto& m : local_minima(inversion.pressure_samples(), [&](double x) { return inversion.pressure(x); })) {
+    if (m.value < result.lowest_pressure) result.lowest_pressure = m.value, result.x_of_lowest_pressure = m.x;
   }
-  const auto& gaps = inversion.gap_samples();
-  const auto lowest = std::min_element(gaps.begin(), gaps.end(),
-                                       [](const auto& u, const auto& v) { return u.value < v.value; });
-  if (lowest != gaps.end() && lowest->value < 0) {  // the bottom, by Brent's method
-    result.lowest_gap = lowest->value, result.x_of_lowest_gap = lowest->x;
-    const double h = surface.resolution / 4;
-    const auto [x, g] = boost::math::tools::brent_find_minima(
-        [&](double x) { return inversion.gap(x); }, std::max(a, lowest->x - h), std::min(pi, lowest->x + h), 52);
-    if (g < result.lowest_gap) result.lowest_gap = g, result.x_of_lowest_gap = x;
+  for (const auto& m : local_minima(inversion.gap_samples(), [&](double x) { return inversion.gap(x); })) {
+    if (m.value < result.lowest_gap) result.lowest_gap = m.value, result.x_of_lowest_gap = m.x;
   }
-  result.solution = !(result.lowest_pressure < -pressure_tolerance * highest) &&
-                    !(result.lowest_gap < -penetration_tolerance * scan_height(surface).range);
+  result.penetrates = result.lowest_gap < -penetration_tolerance * scan_height(surface).range;
+  result.solution = !(result.lowest_pressure < -pressure_tolerance * highest) && !result.penetrates;
   return result;
 }
 

@@ -70,6 +70,7 @@ class ContactSolver {
   struct Penetration {
     Zone zone;
     double x, depth;  // deepest point (x^) and gap there (< 0)
+    double curvature;  // of the gap there, d2 gap/dx^2 > 0
   };
   struct Check {
     bool pressure_ok;
@@ -95,7 +96,7 @@ class ContactSolver {
 // p >= 0 on it and gap >= 0 off it (beyond -1e-9 of the height range); the lowest gap and
 // pressure, and where (x^, normalised p^).
 struct SingleZoneResult {
-  bool solution;
+  bool solution, penetrates;
   double lowest_gap, x_of_lowest_gap;
   double lowest_pressure, x_of_lowest_pressure;
 };

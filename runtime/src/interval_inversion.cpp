@@ -439,6 +439,13 @@ void IntervalInversion::prepare(double P) {
       pressure_samples_.push_back({x, pressure(x)});
     }
   }
+  double highest = 0;
+  for (const Sample& s : pressure_samples_) highest = std::max(highest, std::fabs(s.value));
+  rounding_ = 0;
+  for (std::size_t i = 0; i < pressure_samples_.size(); i += 3) {
+    const Sample& s = pressure_samples_[i];
+    if (s.value != 0) rounding_ = std::max(rounding_, rounding_amplification(s.x) * std::fabs(s.value) / highest);
+  }
   const double scale = 2 / surface_.E;
   for (const Region& region : regions_off()) {
     const double phase = phase_outside((region.lo + region.hi) / 2);

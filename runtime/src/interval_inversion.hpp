@@ -104,6 +104,11 @@ class IntervalInversion {
   // the rounding error of p relative to p.
   double rounding_amplification(double x) const;
 
+  // The rounding error of the pressure relative to its largest value, at the pressure
+  // samples (prepare()): where many zones cluster, the product R of the several-interval
+  // formula spans many orders of magnitude and S is a sum of terms far larger than itself.
+  double rounding() const { return rounding_; }
+
   struct Sample {
     double x, value;
   };
@@ -197,6 +202,7 @@ class IntervalInversion {
   double full_contact_constant_ = 0;   // p = -S + C in full contact
   std::vector<PanelTable> zone_tables_, gap_tables_;
   std::vector<Sample> pressure_samples_, gap_samples_;
+  double rounding_ = 0;
 };
 
 }  // namespace wavecontact::detail

@@ -127,7 +127,8 @@ double full_contact_load(const Surface& surface);
 // p >= 0 on it and gap >= 0 off it (0 < a < b1).
 struct SingleZoneCheck {
   bool solution;
-  double lowest_gap, x_of_lowest_gap;            // [length]; lowest_gap < 0: penetration
+  bool penetrates;  // the gap is below -1e-9 of the height range off the zone
+  double lowest_gap, x_of_lowest_gap;            // [length], x >= 0; lowest_gap < 0: penetration
   double lowest_pressure, x_of_lowest_pressure;  // [pressure]
 };
 SingleZoneCheck single_zone_check(const Surface& surface, double a);
