@@ -13,6 +13,7 @@
 
 #include "periodic_regime.hpp"
 #include "validate.hpp"
+#include "wavecontact/contact.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace wavecontact {
@@ -36,7 +37,7 @@ double bracketed_root(const F& f, double lo, double hi, double f_lo, double f_hi
 
 // The lowest of the pressures p[i] at the points xs[i]; below -64 eps scale counts as negative.
 Admissibility lowest_pressure(const std::vector<double>& xs, const std::vector<double>& p, double scale) {
-  Admissibility result{true, 0, 0};
+  Admissibility result{true, 0, 0, 0, 0};
   for (std::size_t i = 0; i < xs.size(); ++i) {
     if (p[i] < result.most_negative_pressure) {
       result.most_negative_pressure = p[i];
@@ -44,6 +45,15 @@ Admissibility lowest_pressure(const std::vector<double>& xs, const std::vector<d
     }
   }
   result.admissible = !(result.most_negative_pressure < -64 * eps * scale);
+  return result;
+}
+
+// The pressure's verdict with the gap off the zone added.
+Admissibility with_gap(Admissibility result, const Surface& surface, double a) {
+  const SingleZoneCheck check = single_zone_check(surface, a);
+  result.lowest_gap = std::min(0.0, check.lowest_gap);
+  result.x_of_lowest_gap = check.lowest_gap < 0 ? check.x_of_lowest_gap : 0;
+  result.admissible = result.admissible && !check.penetrates;
   return result;
 }
 
@@ -93,7 +103,7 @@ Admissibility admissibility(const WavinessParams& params, double a) {
   }
   std::vector<double> p;
   for (double x : xs) p.push_back(pressure(params, a, x));
-  return lowest_pressure(xs, p, pstar(params));
+  return with_gap(lowest_pressure(xs, p, pstar(params)), Surface(params), a);
 }
 
 Admissibility admissibility(const Profile& profile, double a) {
@@ -104,7 +114,8 @@ Admissibility admissibility(const Profile& profile, double a) {
     p.push_back(profile.pressure(a, x));
     scale = std::max(scale, std::fabs(p.back()));
   }
-  return lowest_pressure(xs, p, scale);
+  const Admissibility by_pressure = lowest_pressure(xs, p, scale);
+  return profile.reach() < profile.params().b1 ? by_pressure : with_gap(by_pressure, Surface(profile), a);
 }
 
 LoadCurve::LoadCurve(const WavinessParams& params)

@@ -18,6 +18,7 @@
 #include "roughness_evaluators.hpp"  // generated/
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
+#include "wavecontact/contact.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace wavecontact {
@@ -164,6 +165,11 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
   if (p.minCoeff(&lowest) < 0) most_negative_pressure_ = p[lowest], most_negative_x_ = xs[lowest];
   const double scale = pi / w.b1 * w.E * (w.H1 + params.roughness.H2 * n);
   admissible_ = !(most_negative_pressure_ < -64 * 2.220446049250313e-16 * scale);
+  if (form == Form::exact) {  // the printed eq. 19/20 does not solve eq. 5: no gap for it
+    const SingleZoneCheck gap = single_zone_check(Surface(params), a);
+    if (gap.lowest_gap < 0) lowest_gap_ = gap.lowest_gap, x_of_lowest_gap_ = gap.x_of_lowest_gap;
+    admissible_ = admissible_ && !gap.penetrates;
+  }
 }
 
 double TwoScaleContact::waviness_pressure(double x) const {
@@ -215,11 +221,14 @@ void TwoScaleContact::roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>&
 
 void TwoScaleContact::require_admissible(const char* function) const {
   if (!admissible_) {
+    const std::string why =
+        most_negative_pressure_ < 0
+            ? "here p = " + detail::format(most_negative_pressure_) + " < 0 at x = " + detail::format(most_negative_x_)
+            : "here the surface penetrates by " + detail::format(-lowest_gap_) + " at x = +-" +
+                  detail::format(x_of_lowest_gap_);
     detail::domain_error(function, "a", a_,
-                         "a zone where the total pressure is >= 0; here p = " +
-                             detail::format(most_negative_pressure_) + " < 0 at x = " +
-                             detail::format(most_negative_x_) +
-                             ": the single-zone (continuous contact) solution is not physical");
+                         "a zone with p >= 0 on it and gap >= 0 off it; " + why +
+                             ": one zone is not the contact (wavecontact::solve_contact)");
   }
 }
 

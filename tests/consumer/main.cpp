@@ -22,7 +22,7 @@ const double pi = 3.14159265358979323846;
 // g(v) = -(E/2) y'(x(v)), relative to max |p|.
 double bump_deviation() {
   wavecontact::register_profile(wavecontact::generated::bump_profile_evaluator());
-  const double H = 0.01, c = 0.1, E = 2.0, b1 = 3.0, a = 1.2;
+  const double H = 0.01, c = 0.1, E = 2.0, b1 = 3.0, a = 0.9;  // at 1.2 the valley penetrates
   const wavecontact::Profile profile({"bump", {{"H", H}, {"c", c}}, b1, E});
   const auto g = [&](double v) {
     const double x = 2 * std::atan(v), d = 2 - std::cos(x);

@@ -1,9 +1,11 @@
 // Which single-zone solutions of the wave curve are physical and stable, over the whole
-// range 0 < a < b1 (MATH.md fact 8):
-// - admissible: the pressure is >= 0 everywhere in the zone; beyond b1/2 the exact solution
-//   can turn negative on the lower flank (the contact would separate there);
-// - stable: dP/da > 0. For m >= 2 the load is not monotone in a: where dP/da < 0 the
-//   equilibrium is unstable and the zone snaps through to a stable one.
+// range 0 < a < b1 (MATH.md facts 8 and 10):
+// - admissible: the pressure is >= 0 everywhere in the zone (beyond b1/2 the exact solution
+//   can turn negative on the lower flank) and the gap is >= 0 everywhere off it (for m above
+//   about 0.7 the valley closes before the load peaks; with roughness, the neighbouring
+//   asperities touch). An admissible zone is the contact (wavecontact/contact.hpp): the
+//   solution is unique; where none is, the contact has more zones (solve_contact());
+// - stable: dP/da > 0. For m above about 0.7 the load is not monotone in a.
 #pragma once
 
 #include <functional>
@@ -22,15 +24,19 @@ struct Admissibility {
   bool admissible;
   double most_negative_x;         // where the pressure is lowest (0 if it is >= 0 everywhere)
   double most_negative_pressure;  // that pressure if negative, else 0
+  double lowest_gap;              // the lowest gap off the zone [length]; < 0: penetration
+  double x_of_lowest_gap;         // where, x >= 0
 };
 
 // The exact pressure of the zone of half-width a, 0 < a < b1, scanned on 128 evenly spaced
 // points, 32 between x = b1/2 and a (where it can turn negative) and 10 approaching the edge;
-// a pressure below -64 eps p* counts as negative.
+// a pressure below -64 eps p* counts as negative. The gap off the zone by
+// wavecontact::single_zone_check() (below -1e-9 of the profile's height range: penetration).
 Admissibility admissibility(const WavinessParams& params, double a);
 
 // The same for a user profile, 0 < a < profile.reach(): 128 evenly spaced points and 10
-// approaching the edge; a pressure below -64 eps max|p| counts as negative.
+// approaching the edge; a pressure below -64 eps max|p| counts as negative. The gap is
+// checked where the profile has no pole on the period (reach() = b1).
 Admissibility admissibility(const Profile& profile, double a);
 
 struct Equilibrium {

@@ -86,11 +86,17 @@ class TwoScaleContact {
   double roughness_load() const { return roughness_load_; }
   double load() const { return waviness_load_ + roughness_load_; }
 
-  // The single-zone solution is physical only if p >= 0 in the whole zone. Checked on
-  // 16 n + 64 evenly spaced points and 10 points approaching the edge.
+  // The single-zone solution is the contact only if p >= 0 in the whole zone (checked on
+  // 16 n + 64 evenly spaced points and 10 points approaching the edge) and, for the exact
+  // form, the gap is >= 0 everywhere off it (wavecontact::single_zone_check(): a neighbouring
+  // asperity or the valley must not penetrate). Otherwise the contact has more zones:
+  // wavecontact::solve_contact().
   bool admissible() const { return admissible_; }
   double most_negative_x() const { return most_negative_x_; }
   double most_negative_pressure() const { return most_negative_pressure_; }
+  // The lowest gap off the zone [length] (< 0: penetration; 0 if not checked) and where.
+  double lowest_gap() const { return lowest_gap_; }
+  double x_of_lowest_gap() const { return x_of_lowest_gap_; }
 
   double half_width() const { return a_; }
 
@@ -108,6 +114,7 @@ class TwoScaleContact {
   double waviness_load_ = 0, roughness_load_ = 0;
   bool admissible_ = true;
   double most_negative_x_ = 0, most_negative_pressure_ = 0;
+  double lowest_gap_ = 0, x_of_lowest_gap_ = 0;
 };
 
 // Eq. 15: the roughness harmonic in full contact at its onset,
