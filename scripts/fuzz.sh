@@ -12,7 +12,7 @@ CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DWAVECONTACT_FUZZ=ON \
   -DWAVECONTACT_BUILD_TESTS=OFF -DWAVECONTACT_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 cmake --build build-fuzz -j"$(nproc)" --target cli_fuzzer derive_fuzzer
 for target in cli derive; do
-  timeout=10
+  timeout=30  # a multi-zone contact takes seconds under the sanitizers
   [ "$target" = derive ] && timeout=60  # a valid n near 4096 takes ~1 s under the sanitizers
   work="build-fuzz/work-$target"
   mkdir -p "$work"

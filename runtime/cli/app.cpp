@@ -15,9 +15,11 @@
 #include <cmath>
 
 #include "app.hpp"
+#include "contact_commands.hpp"
 #include "errors.hpp"
 #include "reproduce.hpp"
 #include "user_profile_commands.hpp"
+#include "wavecontact/contact.hpp"
 #include "wavecontact/shape_design.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/stability.hpp"
@@ -37,8 +39,9 @@ using wavecontact::cli::UsageError;
 struct ProfileOptions {
   std::optional<double> H1, m;
   double b1 = 0;
-  std::optional<double> E, E1, nu1, E2, nu2, H2;
-  std::optional<int> n;
+  std::optional<double> E, E1, nu1, E2, nu2;
+  std::vector<double> H2;
+  std::vector<int> n;
   std::string form = "exact";
   std::optional<std::string> profile_name;
   std::vector<std::string> profile_parameters;
@@ -61,8 +64,13 @@ struct ProfileOptions {
     auto* e2 = app->add_option("--E2", E2, "Young's modulus of body 2");
     auto* n2 = app->add_option("--nu2", nu2, "Poisson ratio of body 2");
     for (auto* o : {e1, n1, e2, n2}) e->excludes(o);
-    auto* h2 = app->add_option("--H2", H2, "height of the roughness harmonic H2 [length] (with --n)");
-    auto* ratio = app->add_option("--n", n, "wavelength ratio n = b1/b2, even (with --H2)");
+    auto* h2 = app->add_option("--H2", H2,
+                               "height of the roughness harmonic H2 [length] (with --n); a comma list "
+                               "adds several harmonics (--P and --pa-over-pstar only)")
+                   ->delimiter(',');
+    auto* ratio = app->add_option("--n", n, "wavelength ratio n = b1/b2, even (with --H2; a comma list "
+                                            "for several)")
+                      ->delimiter(',');
     h2->needs(ratio);
     ratio->needs(h2);
     name->excludes(h2)->excludes(ratio);
@@ -100,19 +108,69 @@ struct ProfileOptions {
 
   Form selected_form() const { return form == "paper" ? Form::paper : Form::exact; }
 
-  // The two-scale profile (eq. 1), H2 = 0 when no roughness is given.
-  TwoScaleParams two_scale() const { return {params(), {H2.value_or(0.0), n.value_or(2)}}; }
-  bool has_roughness() const { return H2.has_value(); }
+  // The roughness harmonics (eq. 3): as many --H2 as --n, each H2 >= 0 and n even.
+  std::vector<wavecontact::Harmonic> harmonics() const {
+    if (H2.size() != n.size()) {
+      throw UsageError("give as many --H2 as --n (" + std::to_string(H2.size()) + " and " +
+                       std::to_string(n.size()) + ")");
+    }
+    std::vector<wavecontact::Harmonic> result;
+    for (std::size_t i = 0; i < H2.size(); ++i) {
+      wavecontact::validate(wavecontact::RoughnessParams{H2[i], n[i]}, "wavecontact");
+      result.push_back({H2[i], n[i]});
+    }
+    return result;
+  }
+
+  // The two-scale profile (eq. 1), H2 = 0 when no roughness is given: one harmonic at most.
+  TwoScaleParams two_scale() const {
+    const std::vector<wavecontact::Harmonic> h = harmonics();
+    if (h.size() > 1) {
+      throw UsageError("one zone (--a, --single-zone, load, curve) takes one roughness harmonic; "
+                       "several are for the contact at a load (--P, --pa-over-pstar)");
+    }
+    return {params(), h.empty() ? wavecontact::RoughnessParams{0.0, 2} : wavecontact::RoughnessParams{h[0].H, h[0].n}};
+  }
+  bool has_roughness() const { return !H2.empty(); }
+
+  // The surface of the real contact: the wave curve with every harmonic, or the user profile.
+  // The solver's work grows like n^2 and its reach ends at about fifteen clustered zones in
+  // half a period: here n <= 256 and at most 8 harmonics.
+  wavecontact::Surface surface() const {
+    if (is_user_profile()) return wavecontact::Surface(user_profile());
+    if (form != "exact") throw UsageError("--form paper applies to one zone (--a, --single-zone)");
+    const std::vector<wavecontact::Harmonic> h = harmonics();
+    if (h.size() > 8) throw UsageError("at most 8 roughness harmonics for the contact at a load");
+    for (const auto& harmonic : h) {
+      if (harmonic.n > 256) {
+        throw UsageError("--n " + std::to_string(harmonic.n) +
+                         ": the contact at a load takes n <= 256 here (the library, any n)");
+      }
+    }
+    return wavecontact::Surface(params(), h);
+  }
+
+  // P at pa/p* = 1 (pi E* H1), for the wave curve.
+  std::optional<double> pstar_load() const {
+    if (is_user_profile()) return std::nullopt;
+    const WavinessParams p = params();
+    return M_PI * p.E * p.H1;
+  }
 };
 
-// The zone for a: refuses it, naming x and p, if the total pressure goes negative.
+// The zone for a: refuses it if the total pressure goes negative in it (naming x and p) or
+// the surface penetrates off it (naming x and the penetration).
 TwoScaleContact admissible_contact(const TwoScaleParams& params, double a, Form form) {
   TwoScaleContact contact(params, a, form);
   if (!contact.admissible()) {
-    throw InadmissibleError(
-        "no single-zone solution at a = " + all_digits(a) + ": the total pressure is p = " +
-        all_digits(contact.most_negative_pressure()) + " < 0 at x = " +
-        all_digits(contact.most_negative_x()) + " (the contact would separate)");
+    const std::string why =
+        contact.most_negative_pressure() < 0
+            ? "the total pressure is p = " + all_digits(contact.most_negative_pressure()) + " < 0 at x = " +
+                  all_digits(contact.most_negative_x()) + " (the contact would separate)"
+            : "the surface penetrates by " + all_digits(-contact.lowest_gap()) + " at x = +-" +
+                  all_digits(contact.x_of_lowest_gap()) + " (the gap would be negative)";
+    throw InadmissibleError("no single-zone solution at a = " + all_digits(a) + ": " + why +
+                            "; solve --P gives the contact at a load");
   }
   return contact;
 }
@@ -124,50 +182,49 @@ std::vector<wavecontact::Equilibrium> equilibria(const ProfileOptions& profile, 
                               : wavecontact::LoadCurve(profile.params()).equilibria(P);
   if (roots.empty()) {
     throw UsageError("no single contact zone 0 < a < b1 carries P = " + all_digits(P) +
-                     " (beyond the largest such load the contact is full)");
+                     " (solve without --single-zone gives the contact)");
   }
   return roots;
 }
 
-// Exactly one of --a, --P, --pa-over-pstar fixes the contact half-width.
+// Exactly one of --a (one zone, closed form), --P or --pa-over-pstar (the contact at loads).
 struct ZoneOptions {
-  std::optional<double> a, P, ratio;
+  std::optional<double> a;
+  std::vector<double> P, ratio;
+  double tolerance = 1e-10;
 
-  void add_to(CLI::App* app, bool with_a) {
-    if (with_a) app->add_option("--a", a, "contact half-width a, 0 < a < b1 [length]");
-    app->add_option("--P", P, "load per unit length P [pressure x length]");
-    app->add_option("--pa-over-pstar", ratio, "dimensionless mean pressure pa/p*");
+  void add_to(CLI::App* app, bool with_a, bool several_loads) {
+    if (with_a) app->add_option("--a", a, "contact half-width a of one zone, 0 < a < b1 [length]");
+    const std::string list = several_loads ? " (a comma list for several)" : "";
+    app->add_option("--P", P, "load per unit length P [pressure x length]" + list)->delimiter(',');
+    app->add_option("--pa-over-pstar", ratio, "dimensionless mean pressure pa/p*" + list)->delimiter(',');
+    app->add_option("--tolerance", tolerance, "relative error the contact must meet, 1e-14 to 1e-2")
+        ->capture_default_str();
   }
 
-  // The load the options fix, if they do not give --a.
-  std::optional<double> load(const ProfileOptions& profile) const {
-    const int given = (a ? 1 : 0) + (P ? 1 : 0) + (ratio ? 1 : 0);
+  // The loads the options fix (none with --a).
+  std::vector<double> loads(const ProfileOptions& profile) const {
+    const int given = (a ? 1 : 0) + (P.empty() ? 0 : 1) + (ratio.empty() ? 0 : 1);
     if (given != 1) throw UsageError("give exactly one of --a, --P, --pa-over-pstar");
-    if (a) return std::nullopt;
-    if (ratio && profile.is_user_profile()) {
+    if (P.size() + ratio.size() > 1000) throw UsageError("at most 1000 loads");
+    if (a) return {};
+    if (!ratio.empty() && profile.is_user_profile()) {
       throw UsageError("--pa-over-pstar (p* = pi E* H1/(2 b1)) needs H1: give --P for a user profile");
     }
-    if (P) return *P;
-    const WavinessParams p = profile.params();
-    return *ratio * M_PI * p.E * p.H1;  // pa/p* = P/(pi E* H1)
+    if (!P.empty()) return P;
+    std::vector<double> loads;
+    for (double r : ratio) loads.push_back(r * *profile.pstar_load());  // pa/p* = P/(pi E* H1)
+    return loads;
   }
 
-  double half_width(const ProfileOptions& profile) const {
-    const std::optional<double> P = load(profile);
-    if (!P) return *a;
-    const std::vector<wavecontact::Equilibrium> roots =
-        profile.is_user_profile()
-            ? wavecontact::cli::user_profile_equilibria(profile.user_profile(), *P)
-            : equilibria(profile, *P);
-    if (roots.size() > 1) {
-      std::string list;
-      for (const auto& r : roots) {
-        list += (list.empty() ? "" : ", ") + all_digits(r.a) + (r.stable ? " (stable)" : " (unstable)");
-      }
-      throw UsageError("the load is carried by several half-widths a = " + list + "; give --a");
-    }
-    return roots.front().a;
+  // The one load, for pressure and contact.
+  double load(const ProfileOptions& profile) const {
+    const std::vector<double> l = loads(profile);
+    if (l.size() != 1) throw UsageError("give one load");
+    return l.front();
   }
+
+  wavecontact::SolverOptions solver() const { return {tolerance, 0}; }
 };
 
 std::string pressure_table(const TwoScaleParams& p, double a, const std::vector<double>& xs,
@@ -227,26 +284,41 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
   int points = 100;
   std::string out_dir;
 
-  auto* pressure = app.add_subcommand("pressure", "contact pressure at the points --x");
+  auto* pressure = app.add_subcommand(
+      "pressure", "contact pressure at the points --x: of the contact at a load (--P, --pa-over-pstar; "
+                  "with the gap), or of one zone (--a, closed form)");
   profile.add_to(pressure, true);
-  zone.add_to(pressure, true);
+  zone.add_to(pressure, true, false);
   pressure->add_option("--x", xs, "points x (comma-separated) [length]")
       ->required()
       ->delimiter(',');
 
-  auto* load = app.add_subcommand("load", "load, mean pressure and contact fraction for --a");
+  auto* load = app.add_subcommand("load", "load, mean pressure and contact fraction of one zone --a");
   ProfileOptions load_profile;
   std::optional<double> load_a;
   load_profile.add_to(load, true);
   load->add_option("--a", load_a, "contact half-width a, 0 < a < b1 [length]")->required();
 
-  auto* solve = app.add_subcommand("solve", "contact half-width for a load");
+  auto* solve = app.add_subcommand(
+      "solve", "the contact at each load (--P or --pa-over-pstar): zones per period, contact fraction, "
+               "pressures, error estimate; --single-zone: every half-width of one zone carrying it");
   ProfileOptions solve_profile;
   ZoneOptions solve_zone;
-  solve_profile.add_to(solve, false);
-  solve_zone.add_to(solve, false);
+  bool single_zone = false;
+  solve_profile.add_to(solve, true);
+  solve_zone.add_to(solve, false, true);
+  solve->add_flag("--single-zone", single_zone,
+                  "the single-zone family instead: every half-width a carrying the load, stable (dP/da > 0) "
+                  "and admissible (p >= 0 on it, gap >= 0 off it)");
 
-  auto* curve = app.add_subcommand("curve", "pa/p* against 2a/L1 and p(0) against a (Figs. 6, 7)");
+  auto* contact = app.add_subcommand(
+      "contact", "the zones of the contact at a load in the period [-b1, b1): ends, load, largest pressure");
+  ProfileOptions contact_profile;
+  ZoneOptions contact_zone;
+  contact_profile.add_to(contact, false);
+  contact_zone.add_to(contact, false, false);
+
+  auto* curve = app.add_subcommand("curve", "pa/p* against 2a/L1 and p(0) against a, single zones (Figs. 6, 7)");
   ProfileOptions curve_profile;
   curve_profile.add_to(curve, false);
   curve->add_option("--points", points, "number of half-widths in (0, b1/2]")->capture_default_str();
@@ -269,30 +341,37 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
     app.parse(argc, argv);
     std::string output;
     namespace cli = wavecontact::cli;
-    if (*pressure && profile.is_user_profile()) {
-      output = cli::user_profile_pressure(profile.user_profile(), zone.half_width(profile), xs);
+    if (*pressure && !zone.a) {
+      output = cli::contact_pressure(profile.surface(), zone.load(profile), xs, zone.solver());
+    } else if (*contact) {
+      output = cli::contact_zones(contact_profile.surface(), contact_zone.load(contact_profile),
+                                  contact_zone.solver());
+    } else if (*solve && !single_zone) {
+      if (solve_profile.form != "exact") throw UsageError("--form paper needs --single-zone");
+      output = cli::contact_rows(solve_profile.surface(), solve_zone.loads(solve_profile),
+                                 solve_profile.pstar_load(), solve_zone.solver());
+    } else if (*pressure && profile.is_user_profile()) {
+      zone.loads(profile);  // --a alone
+      output = cli::user_profile_pressure(profile.user_profile(), *zone.a, xs);
     } else if (*load && load_profile.is_user_profile()) {
       output = cli::user_profile_load(load_profile.user_profile(), *load_a);
     } else if (*solve && solve_profile.is_user_profile()) {
-      const std::optional<double> P = solve_zone.load(solve_profile);
-      if (!P) throw UsageError("give --P");
-      output = cli::user_profile_solve(solve_profile.user_profile(), *P);
+      output = cli::user_profile_solve(solve_profile.user_profile(), solve_zone.load(solve_profile));
     } else if (*curve && curve_profile.is_user_profile()) {
       output = cli::user_profile_curve(curve_profile.user_profile(), points);
     } else if (*pressure) {
-      output = pressure_table(profile.two_scale(), zone.half_width(profile), xs,
-                              profile.selected_form());
+      zone.loads(profile);  // --a alone
+      output = pressure_table(profile.two_scale(), *zone.a, xs, profile.selected_form());
     } else if (*load) {
       output = "a,P,P_waviness,P_roughness,pa,pa_over_pstar,contact_fraction\n" +
                load_row(load_profile.two_scale(), *load_a, load_profile.selected_form());
     } else if (*solve) {
-      // One row per half-width carrying the load (several in a snap-through range or with
-      // roughness), flagged stable (dP/da > 0) and admissible (p >= 0); an error naming
-      // the refusal if none is admissible.
+      // --single-zone: one row per half-width carrying the load (several in a snap-through
+      // range or with roughness), flagged stable (dP/da > 0) and admissible (p >= 0 on it,
+      // gap >= 0 off it); an error naming the refusal if none is admissible.
       const TwoScaleParams p = solve_profile.two_scale();
-      const std::optional<double> P = solve_zone.load(solve_profile);
-      if (!P) throw UsageError("give --P or --pa-over-pstar");
-      const std::vector<wavecontact::Equilibrium> found = equilibria(solve_profile, *P);
+      const double P = solve_zone.load(solve_profile);
+      const std::vector<wavecontact::Equilibrium> found = equilibria(solve_profile, P);
       std::string rows;
       bool any_admissible = false;
       for (const auto& e : found) {

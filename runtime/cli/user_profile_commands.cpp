@@ -10,15 +10,30 @@ namespace wavecontact::cli {
 
 namespace {
 
-// The zone of half-width a, refused (naming x and p) if the pressure goes negative.
+// The zone of half-width a, refused if the pressure goes negative in it (naming x and p) or
+// the surface penetrates off it (naming x and the penetration).
 void require_admissible(const Profile& profile, double a) {
   const Admissibility check = admissibility(profile, a);
   if (!check.admissible) {
-    throw InadmissibleError("no single-zone solution at a = " + all_digits(a) +
-                            ": the pressure is p = " + all_digits(check.most_negative_pressure) +
-                            " < 0 at x = " + all_digits(check.most_negative_x) +
-                            " (the contact would separate)");
+    const std::string why =
+        check.most_negative_pressure < 0
+            ? "the pressure is p = " + all_digits(check.most_negative_pressure) + " < 0 at x = " +
+                  all_digits(check.most_negative_x) + " (the contact would separate)"
+            : "the surface penetrates by " + all_digits(-check.lowest_gap) + " at x = +-" +
+                  all_digits(check.x_of_lowest_gap) + " (the gap would be negative)";
+    throw InadmissibleError("no single-zone solution at a = " + all_digits(a) + ": " + why +
+                            "; solve --P gives the contact at a load");
   }
+}
+
+// Every half-width carrying P, with stability and admissibility (UsageError if none).
+std::vector<Equilibrium> user_profile_equilibria(const Profile& profile, double P) {
+  const std::vector<Equilibrium> roots = LoadCurve(profile).equilibria(P);
+  if (roots.empty()) {
+    throw UsageError("no single contact zone 0 < a < " + all_digits(profile.reach()) +
+                     " carries P = " + all_digits(P) + " (solve without --single-zone gives the contact)");
+  }
+  return roots;
 }
 
 }  // namespace
@@ -39,15 +54,6 @@ Profile user_profile(const std::string& name, const std::vector<std::string>& pa
     }
   }
   return Profile(params);
-}
-
-std::vector<Equilibrium> user_profile_equilibria(const Profile& profile, double P) {
-  const std::vector<Equilibrium> roots = LoadCurve(profile).equilibria(P);
-  if (roots.empty()) {
-    throw UsageError("no single contact zone 0 < a < " + all_digits(profile.reach()) +
-                     " carries P = " + all_digits(P));
-  }
-  return roots;
 }
 
 std::string user_profile_pressure(const Profile& profile, double a, const std::vector<double>& xs) {

@@ -1,4 +1,5 @@
-// pressure, load, solve and curve for a user profile (--profile-name, wavecontact/profile.hpp).
+// pressure --a, load, solve --single-zone and curve for a user profile (--profile-name,
+// wavecontact/profile.hpp); the contact at a load is contact_commands.hpp's.
 #pragma once
 
 #include <string>
@@ -13,10 +14,8 @@ namespace wavecontact::cli {
 Profile user_profile(const std::string& name, const std::vector<std::string>& parameters,
                      double b1, double E);
 
-// Every half-width carrying P, with stability and admissibility (UsageError if none).
-std::vector<Equilibrium> user_profile_equilibria(const Profile& profile, double P);
-
-// CSV bodies with their header lines; InadmissibleError if p < 0 somewhere in the zone.
+// CSV bodies with their header lines of one zone (--a) or the single-zone family
+// (solve --single-zone); InadmissibleError if p < 0 in the zone or the gap < 0 off it.
 std::string user_profile_pressure(const Profile& profile, double a, const std::vector<double>& xs);
 std::string user_profile_load(const Profile& profile, double a);
 std::string user_profile_solve(const Profile& profile, double P);

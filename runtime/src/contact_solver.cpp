@@ -508,7 +508,9 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
         ratio /= 4;
         if (ratio < smallest_step) {
           throw std::runtime_error("wavecontact::solve_contact: the continuation stalled at P = " +
-                                   std::to_string(state->P) + " on the way to " + std::to_string(target));
+                                   std::to_string(state->P) + " (" + std::to_string(state->zones.size()) +
+                                   " zones in half a period) on the way to " + std::to_string(target) +
+                                   ": events too close together for the solver");
         }
         continue;
       }
