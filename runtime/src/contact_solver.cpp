@@ -102,7 +102,8 @@ std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversio
   std::sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
   std::vector<IntervalInversion::Sample> minima;
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    const bool below_left = i == 0 || samples[i].value < samples[i - 1].value;
+    // Panels share their end points: a minimum on one comes twice, so <= on the left.
+    const bool below_left = i == 0 || samples[i].value <= samples[i - 1].value;
     const bool below_right = i + 1 == samples.size() || samples[i].value < samples[i + 1].value;
     if (!below_left || !below_right) continue;
     const double a = i > 0 ? samples[i - 1].x : samples[i].x;
@@ -487,10 +488,18 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return loads[a] < loads[b]; });
   std::vector<SolvedContact> solved(loads.size());
   std::optional<State> state, before;
+  std::optional<SolvedContact> full;  // full contact, p = P/(2 pi) + p0: one solution for every load
   for (std::size_t index : order) {
     const double target = loads[index];
     if (target >= full_contact_load_) {
-      solved[index] = refine({{{0, pi}}, target, {}, nullptr});
+      if (!full) {
+        full = refine({{{0, pi}}, target, {}, nullptr});
+      } else {
+        auto shifted = std::make_shared<IntervalInversion>(*full->inversion);
+        shifted->shift_full_contact_load(target);
+        full->P = target, full->inversion = std::move(shifted);
+      }
+      solved[index] = *full;
       continue;
     }
     if (!state) {

@@ -413,7 +413,15 @@ double IntervalInversion::half_load() const {
   return sum;
 }
 
+void IntervalInversion::shift_full_contact_load(double P) {
+  if (kappa_ >= 0) throw std::logic_error("IntervalInversion::shift_full_contact_load: not full contact");
+  const double shift = (P - load_) / (2 * pi);
+  full_contact_constant_ += shift, load_ = P;
+  for (Sample& s : pressure_samples_) s.value += shift;
+}
+
 void IntervalInversion::prepare(double P) {
+  load_ = P;
   const int M = order_ + 2;
   const std::vector<double> cheb = ChebyshevPanel::points(M);
   zone_tables_.clear(), gap_tables_.clear();

@@ -94,6 +94,9 @@ class IntervalInversion {
   // the ends solve the equations for the load P, with Grading::evaluation.
   void prepare(double P);
 
+  // In full contact the pressure is P/(2 pi) + p0: the same solution at another load.
+  void shift_full_contact_load(double P);
+
   // The normalised pressure p^(x^), |x^| <= pi, 0 off the zones.
   double pressure(double x) const;
   // The gap (y(0) - y(x^)) - (u(0) - u(x^)) up to the constant that makes it 0 on the zones.
@@ -200,6 +203,7 @@ class IntervalInversion {
   std::vector<Node> nodes_;            // F/R on the intervals, signed by rho
   std::vector<NodeBlock> blocks_;      // the same, by reference
   double full_contact_constant_ = 0;   // p = -S + C in full contact
+  double load_ = 0;                    // the load of prepare()
   std::vector<PanelTable> zone_tables_, gap_tables_;
   std::vector<Sample> pressure_samples_, gap_samples_;
   double rounding_ = 0;
