@@ -254,7 +254,7 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
   fs::remove_all(out);
   const Result r = run("reproduce --out '" + out.string() + "'");
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
-  for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9"}) {
+  for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11"}) {
     for (const char* extension : {".csv", ".png"}) {
       const fs::path file = out / (std::string(figure) + extension);
       BOOST_TEST(fs::exists(file), file);

@@ -1,4 +1,4 @@
-// Figs. 2, 4, 7 and 8 of the seed paper: the two-scale profile.
+// Figs. 2, 4 and 8 of the seed paper: the two-scale profile (Fig. 7: figures_contact.cpp).
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -80,7 +80,6 @@ struct Case {
   double m;
 };
 const std::vector<Case> cases{{8, 0}, {8, 10}, {16, 0}, {16, 10}};
-constexpr double H2_figures = 0.15;
 
 // One panel per n (cases 0-1: n = 8, cases 2-3: n = 16); curves(rows, colour, "m = ...")
 // gives the curves of one case, whose rows are its block of `samples` lines.
@@ -102,41 +101,6 @@ std::string panels_by_n(int samples, Curves&& curves) {
 
 }  // namespace
 
-// Fig. 7: p(0) against 2a/L1, two-scale (eq. 21) and single-scale; exact solid, printed
-// (eq. 14 + eq. 20) dashed. The exact two-scale curve has gaps where no single-zone
-// solution exists (the total pressure would be negative somewhere in the zone).
-Figure centre_pressure() {
-  constexpr int samples = 400;
-  std::ostringstream csv;
-  csv << "n,m,contact_fraction,p0_two_scale_exact,p0_two_scale_printed,p0_single_exact,"
-         "p0_single_printed,admissible\n";
-  for (const Case& c : cases) {
-    const TwoScaleParams params{{H1, b1, c.m, E}, {H2_figures, c.n}};
-    for (int i = 1; i <= samples; ++i) {
-      const double a = b1 / 2 * i / samples;
-      const TwoScaleContact exact(params, a, Form::exact), printed(params, a, Form::paper);
-      const double two_scale = exact.waviness_pressure(0) + exact.roughness_pressure(0);
-      csv << c.n << "," << number(c.m) << "," << number(a / b1) << ","
-          << number(exact.admissible() ? two_scale : not_a_number) << ","
-          << number(printed.waviness_pressure(0) + printed.roughness_pressure(0)) << ","
-          << number(exact.waviness_pressure(0)) << "," << number(printed.waviness_pressure(0))
-          << "," << (exact.admissible() ? 1 : 0) << "\n";
-    }
-  }
-  std::string script =
-      "set multiplot layout 1,2 title 'Fig. 7: p(0), H1 = 1 mm, H2 = 0.15 mm, b1 = 10 mm "
-      "(solid: exact; dashed: printed eq. 14/20; gaps: no admissible single zone)'\n"
-      "set xlabel '2a / L1'\nset ylabel 'p(0) / E*'\nset key top right font ',8'\nset yrange [0:*]\n";
-  script += panels_by_n(samples, [](const std::string& rows, int colour, const std::string& m) {
-    return std::vector<std::string>{
-        curve("fig7.csv", rows, "3:4", colour, true, m + ", two-scale, exact"),
-        curve("fig7.csv", rows, "3:5", colour, false, m + ", two-scale, printed"),
-        curve("fig7.csv", rows, "3:6", colour + 1, true, m + ", single-scale, exact"),
-        curve("fig7.csv", rows, "3:7", colour + 1, false, m + ", single-scale, printed")};
-  });
-  return {"fig7", "Fig. 7: p(0) against 2a/L1, two-scale (H2 = 0.15 mm) against single-scale, n = 8 and 16, m = 0 and 10", csv.str(), script};
-}
-
 // Fig. 8: contact area 2a/L1 against pa/p* on a <= b2, two-scale and single-scale.
 Figure two_scale_contact_area() {
   constexpr int samples = 200;
@@ -144,7 +108,7 @@ Figure two_scale_contact_area() {
   csv << "n,m,contact_fraction,pa_over_pstar_two_scale_exact,pa_over_pstar_two_scale_printed,"
          "pa_over_pstar_single,admissible\n";
   for (const Case& c : cases) {
-    const TwoScaleParams params{{H1, b1, c.m, E}, {H2_figures, c.n}};
+    const TwoScaleParams params{{H1, b1, c.m, E}, {two_scale_H2, c.n}};
     const double b2 = b1 / c.n, pi_E_H1 = pi * E * H1;
     for (int i = 1; i <= samples; ++i) {
       const double a = b2 * i / samples;

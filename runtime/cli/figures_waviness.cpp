@@ -1,4 +1,4 @@
-// Figs. 1, 5a, 5b and 6 of the seed paper: the waviness alone.
+// Figs. 1, 5a and 5b of the seed paper: the waviness alone (Fig. 6: figures_contact.cpp).
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -106,45 +106,6 @@ Figure periodic_pressure() {
       "zone is not admissible",
       "Fig. 5b: periodic regime (p < 0: no single zone; the contact separates),",
       {0.75, 0.95}, 3.5);
-}
-
-// Fig. 6: contact length against mean pressure, a up to full contact. The printed eq. 14
-// integrates to the exact load up to b1/2; beyond, its continuation (dashed) is drawn while
-// it is finite. Where dP/da < 0 (snap-through) the exact curve is drawn thin.
-Figure contact_length() {
-  const std::vector<double> ms{0, 0.2, 2, 10, 35};
-  constexpr int samples = 400;
-  std::ostringstream csv, plot;
-  csv << "m,contact_fraction,pa_over_pstar,pa_over_pstar_printed,stable\n";
-  for (double m : ms) {
-    const WavinessParams p{H1, b1, m, E};
-    for (int i = 1; i <= samples; ++i) {
-      const double a = b1 * i / samples;
-      const bool printed = 1 + m * std::cos(M_PI * a / b1) > 0.05;
-      csv << number(m) << "," << number(contact_fraction(p, a)) << ","
-          << number(pa_over_pstar(p, a)) << ","
-          << (printed ? number(pa_over_pstar(p, a, Form::paper)) : "NaN") << ","
-          << (load_slope(p, a) > 0 ? 1 : 0) << "\n";
-    }
-  }
-  plot << "set title 'Fig. 6: 2a/L1 against pa/p*, H1 = 1 mm, b1 = 10 mm (solid: exact, thin where "
-          "dP/da < 0; dashed: printed eq. 14 continued beyond a = b1/2)'\n"
-          "set xlabel 'pa / p*'\nset ylabel '2a / L1'\nset key bottom right\n"
-          "set xrange [0:4]\nset yrange [0:1]\nplot ";
-  for (std::size_t k = 0; k < ms.size(); ++k) {
-    const std::string rows = rows_of_block(static_cast<int>(k), samples);
-    const std::string color = " lc " + std::to_string(k + 1);
-    plot << (k ? ", \\\n  " : "") << "'fig6.csv' skip 1" << rows
-         << " using ($5 == 1 ? $3 : NaN):2 with lines lw 2" << color << " title 'm = "
-         << number(ms[k]) << " exact', "
-         << "'fig6.csv' skip 1" << rows << " using ($5 == 0 ? $3 : NaN):2 with lines lw 1" << color
-         << " notitle";
-    if (ms[k] != 0) {
-      plot << ", 'fig6.csv' skip 1" << rows << " using 4:2 with lines lw 1 dt 2" << color
-           << " title 'm = " << number(ms[k]) << " printed'";
-    }
-  }
-  return {"fig6", "Fig. 6: 2a/L1 against pa/p*, a from 0 to full contact (snap-through for m above about 0.7: see the table)", csv.str(), plot.str() + "\n"};
 }
 
 }  // namespace wavecontact::cli

@@ -27,10 +27,11 @@ void write(const fs::path& path, const std::string& contents) {
 void reproduce(const std::string& out_dir, std::ostream& log) {
   const fs::path dir(out_dir);
   fs::create_directories(dir);
-  const std::vector<Figure> figures{wave_curves(), two_scale_profiles(), roughness_integrand(), single_asperity_pressure(),
-                               periodic_pressure(),
-                               contact_length(), centre_pressure(), two_scale_contact_area(),
-                               shape_design()};
+  const TwoScaleSweeps sweeps = two_scale_sweeps();
+  const std::vector<Figure> figures{wave_curves(),      two_scale_profiles(),    roughness_integrand(),
+                                    single_asperity_pressure(), periodic_pressure(), contact_length(),
+                                    centre_pressure(sweeps),    two_scale_contact_area(), shape_design(),
+                                    contact_fraction_and_zones(sweeps), multi_zone_pressure()};
   for (const Figure& figure : figures) {
     write(dir / (figure.name + ".csv"), figure.csv);
     write(dir / (figure.name + ".gp"),
@@ -44,7 +45,7 @@ void reproduce(const std::string& out_dir, std::ostream& log) {
     }
     log << "wrote " << (dir / (figure.name + ".png")).string() << "\n";
   }
-  write(dir / "REPORT.md", discrepancy_report(figures));
+  write(dir / "REPORT.md", discrepancy_report(figures, sweeps));
   log << "wrote " << (dir / "REPORT.md").string() << "\n";
 }
 
