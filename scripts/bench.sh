@@ -39,6 +39,8 @@ for n in (16, 64, 256):
                   ("point API, per call", f"BM_roughness_pressure_point/{n}")]))
 rows.append(("k_1..k_128, ns", time_ns, "BM_kcoefficients/128",
              [("SymPy", "BM_sympy_kcoefficients/128/iterations:1/manual_time")]))
+rows.append(("contact n=16, 7 zones, 1e-8, ns", time_ns, "BM_contact_multi_zone_n16",
+             [("BEM oracle, 3 grids", "BM_contact_bem_oracle")]))
 print(f"\n{'figure':40} {'ours':>12} {'baseline':>24} {'value':>12} {'ratio':>8}")
 for label, measure, ours_name, baselines in rows:
     ours = measure(ours_name)
@@ -53,7 +55,9 @@ for label, name in (("load P(a), ns/call", "BM_load"), ("inverse a(P) for a <= b
                     ("LoadCurve (turning points of P(a)), ns", "BM_load_curve"),
                     ("pa/p* curve of 1000 points, ns", "BM_pa_over_pstar_curve_1000"),
                     ("k_1..k_1024, ns", "BM_kcoefficients/1024"),
-                    ("full regeneration of generated/, ns", "BM_regenerate_default/iterations:1")):
+                    ("full regeneration of generated/, ns", "BM_regenerate_default/iterations:1"),
+                    ("contact, 200 loads, two-scale n = 8, ns", "BM_contact_curve_200/1"),
+                    ("contact, 200 loads, m = 10 to full, ns", "BM_contact_curve_200/0")):
     value = time_ns(name)
     print(f"{label:40} {value if value is not None else float('nan'):12.4g}")
 PY

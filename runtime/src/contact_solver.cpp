@@ -94,11 +94,13 @@ HeightScan scan_height(const SurfaceSlope& surface) {
   return scan;
 }
 
-// The local minima of f (x^ in [0, pi]) from its samples: every sample lower than its
-// neighbours (or an end sample lower than its one neighbour), refined by Brent's method
-// between them. A dip narrower than the samples' spacing shows as its nearest sample.
+// The local minima of f (x^ in [0, pi]) from its samples that may reach below `level`: every
+// sample lower than its neighbours (or an end sample lower than its one neighbour), refined by
+// Brent's method between them unless even a dip as deep again as its neighbours rise stays
+// above the level. A dip narrower than the samples' spacing shows as its nearest sample.
 template <typename F>
-std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversion::Sample> samples, const F& f) {
+std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversion::Sample> samples, const F& f,
+                                                    double level) {
   std::sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
   std::vector<IntervalInversion::Sample> minima;
   for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -108,7 +110,10 @@ std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversio
     if (!below_left || !below_right) continue;
     const double a = i > 0 ? samples[i - 1].x : samples[i].x;
     const double b = i + 1 < samples.size() ? samples[i + 1].x : samples[i].x;
+    const double rise = std::max(i > 0 ? samples[i - 1].value : samples[i].value,
+                                 i + 1 < samples.size() ? samples[i + 1].value : samples[i].value) - samples[i].value;
     IntervalInversion::Sample best = samples[i];
+    if (samples[i].value - rise > level) continue;
     if (b > a) {
       const auto [x, value] = boost::math::tools::brent_find_minima(f, a, b, 40);
       if (value < best.value) best = {x, value};
@@ -309,12 +314,12 @@ ContactSolver::Check ContactSolver::check(const IntervalInversion& inversion) co
   double highest = 0;
   for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
   const auto pressure = [&](double x) { return inversion.pressure(x); };
-  for (const IntervalInversion::Sample& m : local_minima(inversion.pressure_samples(), pressure)) {
+  for (const IntervalInversion::Sample& m : local_minima(inversion.pressure_samples(), pressure, 0.0)) {
     result.pressure_ok = result.pressure_ok && !(m.value < -pressure_tolerance * highest);
   }
   const double floor = -penetration_tolerance * height_range_;
   const auto gap = [&](double x) { return inversion.gap(x); };
-  for (const IntervalInversion::Sample& m : local_minima(inversion.gap_samples(), gap)) {
+  for (const IntervalInversion::Sample& m : local_minima(inversion.gap_samples(), gap, 0.0)) {
     if (!(m.value < floor)) continue;
     // The gap near its lowest point is a parabola; the zone starts at 0.7 of the stretch
     // where it is negative (a Hertzian zone is narrower than the overlap).
@@ -472,9 +477,11 @@ SolvedContact ContactSolver::refine(const State& state) const {
     const double error = estimate(*result, *solve_at(fixed_order_ + 2));
     return {at_order, state.P, fixed_order_, error, result};
   }
-  // 12, 16, ... until the change from the previous order meets the tolerance.
-  std::shared_ptr<const IntervalInversion> previous = solve_at(first_order);
-  for (int order = first_order + order_step;; order += order_step) {
+  // 12, 16, ... until the change from the previous order meets the tolerance; from the
+  // continuation's order 8 when the tolerance allows (order 8 errs by about 1e-10).
+  const int start = tolerance_ >= 1e-8 ? continuation_order : first_order;
+  std::shared_ptr<const IntervalInversion> previous = solve_at(start);
+  for (int order = start + order_step;; order += order_step) {
     auto current = solve_at(order);
     const double error = estimate(*current, *previous);
     if (error <= tolerance_ || order + order_step > last_order) return {zones, state.P, order, error, current};
@@ -543,10 +550,11 @@ SingleZoneResult check_single_zone(const SurfaceSlope& surface, double a) {
   SingleZoneResult result{true, false, 0, 0, 0, 0};
   double highest = 0;
   for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
-  for (const auto& m : local_minima(inversion.pressure_samples(), [&](double x) { return inversion.pressure(x); })) {
+  const double anything = std::numeric_limits<double>::infinity();
+  for (const auto& m : local_minima(inversion.pressure_samples(), [&](double x) { return inversion.pressure(x); }, anything)) {
     if (m.value < result.lowest_pressure) result.lowest_pressure = m.value, result.x_of_lowest_pressure = m.x;
   }
-  for (const auto& m : local_minima(inversion.gap_samples(), [&](double x) { return inversion.gap(x); })) {
+  for (const auto& m : local_minima(inversion.gap_samples(), [&](double x) { return inversion.gap(x); }, anything)) {
     if (m.value < result.lowest_gap) result.lowest_gap = m.value, result.x_of_lowest_gap = m.x;
   }
   result.penetrates = result.lowest_gap < -penetration_tolerance * scan_height(surface).range;

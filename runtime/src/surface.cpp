@@ -37,7 +37,8 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
   auto s = std::make_shared<detail::SurfaceSlope>();
   const double H1 = w.H1, m = w.m;
   // Eq. 2 is odd in s = cos x^ (its |cos| branch): Y(s) = sign(s) Y(|s|), Y'(s) = Y'(|s|);
-  // a harmonic is H T_n(s), with dT_n/ds = n U_(n-1)(s).
+  // a harmonic is H T_n(s), with dT_n/ds = n U_(n-1)(s) (Boost.Math's Chebyshev polynomials;
+  // the slope, evaluated most, by the same three-term recurrence without the policy checks).
   s->height = [=](double c) {
     double y = std::copysign(generated::waviness_height(H1, m, std::fabs(c)), c);
     for (const Harmonic& h : roughness) y += h.H * boost::math::chebyshev_t(static_cast<unsigned>(h.n), c);
@@ -46,7 +47,9 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
   s->slope = [=](double c) {
     double slope = generated::waviness_height_slope(H1, m, std::fabs(c));
     for (const Harmonic& h : roughness) {
-      slope += h.H * h.n * boost::math::chebyshev_u(static_cast<unsigned>(h.n - 1), c);
+      double u0 = 1, u1 = 2 * c;  // U_0, U_1
+      for (int k = 1; k < h.n - 1; ++k) u0 = boost::math::chebyshev_next(c, u1, u0), std::swap(u0, u1);
+      slope += h.H * h.n * (h.n == 1 ? 1.0 : u1);
     }
     return slope;
   };
