@@ -96,13 +96,18 @@ IntervalInversion::IntervalInversion(const SurfaceSlope& surface, std::vector<Zo
   half_span_ = difference(last, 0) / 2;
   for (int k = 0; k < intervals; ++k) add_nodes(interval(k), -1, rho_[k], nodes_, order_);
   for (Node& node : nodes_) node.from_center = (difference(node.ref, 0) + difference(node.ref, last)) / 2 + node.offset;
-  for (int r = 0; r < static_cast<int>(n); ++r) {
-    NodeBlock block{r, {}, {}, {}};
-    for (const Node& node : nodes_) {
-      if (node.ref != r) continue;
-      block.offset.push_back(node.offset), block.f.push_back(node.f), block.weight.push_back(node.weight);
-    }
-    if (!block.offset.empty()) blocks_.push_back(std::move(block));
+  std::vector<std::size_t> per_ref(n, 0);
+  for (const Node& node : nodes_) ++per_ref[static_cast<std::size_t>(node.ref)];
+  std::vector<int> block_of(n, -1);
+  for (std::size_t r = 0; r < n; ++r) {
+    if (per_ref[r] == 0) continue;
+    block_of[r] = static_cast<int>(blocks_.size());
+    NodeBlock& block = blocks_.emplace_back(NodeBlock{static_cast<int>(r), {}, {}, {}});
+    block.offset.reserve(per_ref[r]), block.f.reserve(per_ref[r]), block.weight.reserve(per_ref[r]);
+  }
+  for (const Node& node : nodes_) {
+    NodeBlock& block = blocks_[static_cast<std::size_t>(block_of[static_cast<std::size_t>(node.ref)])];
+    block.offset.push_back(node.offset), block.f.push_back(node.f), block.weight.push_back(node.weight);
   }
 }
 
@@ -196,18 +201,19 @@ double IntervalInversion::S(const Point& p, double* terms) const {
     const double* offset = block.offset.data();
     const double* fv = block.f.data();
     const double* weight = block.weight.data();
+    double block_sum = 0, block_magnitude = 0;
     if (terms) {
+#pragma omp simd reduction(+ : block_sum, block_magnitude)
       for (std::size_t i = 0; i < count; ++i) {
         const double term = weight[i] * (fv[i] - fs) / (offset[i] - d);
-        sum += term;
-        magnitude += std::fabs(term);
+        block_sum += term;
+        block_magnitude += std::fabs(term);
       }
     } else {
-      double block_sum = 0;
 #pragma omp simd reduction(+ : block_sum)
       for (std::size_t i = 0; i < count; ++i) block_sum += weight[i] * (fv[i] - fs) / (offset[i] - d);
-      sum += block_sum;
     }
+    sum += block_sum, magnitude += block_magnitude;
   }
   if (terms) *terms = magnitude / pi + std::fabs(fs * Pi(p.s));
   return sum / pi - fs * Pi(p.s);
@@ -337,20 +343,25 @@ std::vector<IntervalInversion::Panel> IntervalInversion::panels(const Region& r)
 
 void IntervalInversion::add_nodes(const Region& r, int weight_power, double sign,
                                   std::vector<Node>& out, int order) const {
+  const std::vector<Panel> region_panels = panels(r);
+  out.reserve(out.size() + region_panels.size() * static_cast<std::size_t>(order));
+  for (const Panel& panel : region_panels) add_panel_nodes(panel, weight_power, sign, out, order);
+}
+
+void IntervalInversion::add_panel_nodes(const Panel& panel, int weight_power, double sign,
+                                        std::vector<Node>& out, int order) const {
   const GaussLegendre& rule = gauss_legendre(order);
-  for (const Panel& panel : panels(r)) {
-    // dt = 2w dw and |t - anchor|^(1/2) = w: F/R dt = 2 w^(1 - tau) F/R_rest dw,
-    // F R dt = 2 w^(1 + tau) F R_rest dw.
-    const int power = 1 + weight_power * refs_[panel.anchor].tau;
-    const double half = (panel.wb - panel.wa) / 2;
-    for (std::size_t q = 0; q < rule.x.size(); ++q) {
-      const double w = (panel.wa + panel.wb) / 2 + half * rule.x[q];
-      const Point p = panel_point(panel, rule.x[q]);
-      const double rest = product_R(p, panel.anchor);
-      const double weight = sign * half * rule.w[q] * 2 * power_of(w, power) *
-                            (weight_power < 0 ? 1 / rest : rest);
-      out.push_back({p.offset, f(p.s), weight, 0, p.ref});
-    }
+  // dt = 2w dw and |t - anchor|^(1/2) = w: F/R dt = 2 w^(1 - tau) F/R_rest dw,
+  // F R dt = 2 w^(1 + tau) F R_rest dw.
+  const int power = 1 + weight_power * refs_[panel.anchor].tau;
+  const double half = (panel.wb - panel.wa) / 2;
+  for (std::size_t q = 0; q < rule.x.size(); ++q) {
+    const double w = (panel.wa + panel.wb) / 2 + half * rule.x[q];
+    const Point p = panel_point(panel, rule.x[q]);
+    const double rest = product_R(p, panel.anchor);
+    const double weight = sign * half * rule.w[q] * 2 * power_of(w, power) *
+                          (weight_power < 0 ? 1 / rest : rest);
+    out.push_back({p.offset, f(p.s), weight, 0, p.ref});
   }
 }
 
@@ -364,27 +375,33 @@ std::vector<IntervalInversion::Region> IntervalInversion::regions_off() const {
   return regions;
 }
 
-double IntervalInversion::moment_polynomial(int j, double from_center) const {
-  // T_j((t - center)/half_span), and the monic h^j 2^(1-j) T_j for the load (j = kappa).
-  const double x = from_center / half_span_;
-  double t0 = 1, t1 = x;
-  for (int k = 1; k < j; ++k) {
-    const double t2 = 2 * x * t1 - t0;
-    t0 = t1, t1 = t2;
+IntervalInversion::Moments IntervalInversion::moments() const {
+  // M_j with T_j((t - center)/half_span), j < kappa, and the monic h^j 2^(1-j) T_j for the
+  // load (j = kappa), all by one pass of the three-term recurrence; with the sums of the
+  // terms' magnitudes.
+  const std::size_t count = static_cast<std::size_t>(std::max(kappa_, 0)) + 1;
+  Moments m{std::vector<double>(count, 0.0), std::vector<double>(count, 0.0)};
+  const double monic = kappa_ > 0 ? std::pow(half_span_, kappa_) * std::ldexp(1.0, 1 - kappa_) : 1;
+  for (const Node& n : nodes_) {
+    const double x = n.from_center / half_span_, base = n.weight * n.f;
+    double previous = 0, T = 1;  // T_(j-1), T_j
+    for (std::size_t j = 0; j < count; ++j) {
+      if (j > 0) {
+        const double next = j == 1 ? x : 2 * x * T - previous;
+        previous = T, T = next;
+      }
+      const double term = base * (j + 1 == count && j > 0 ? T * monic : T);
+      m.sum[j] += term, m.magnitude[j] += std::fabs(term);
+    }
   }
-  const double T = j == 0 ? 1 : t1;
-  return j == kappa_ && j > 0 ? T * std::pow(half_span_, j) * std::ldexp(1.0, 1 - j) : T;
+  return m;
 }
 
 std::vector<double> IntervalInversion::residuals(double P) const {
+  const Moments m = moments();
   std::vector<double> r;
   for (int j = 0; j <= kappa_; ++j) {
-    double sum = 0, magnitude = 0;
-    for (const Node& n : nodes_) {
-      const double term = n.weight * moment_polynomial(j, n.from_center) * n.f;
-      sum += term;
-      magnitude += std::fabs(term);
-    }
+    const double sum = m.sum[static_cast<std::size_t>(j)], magnitude = m.magnitude[static_cast<std::size_t>(j)];
     if (j < kappa_) {
       r.push_back(magnitude > 0 ? sum / magnitude : 0);
     } else {
@@ -408,9 +425,7 @@ std::vector<double> IntervalInversion::residuals(double P) const {
 
 double IntervalInversion::half_load() const {
   if (kappa_ < 0) throw std::logic_error("IntervalInversion::half_load: full contact carries any load");
-  double sum = 0;
-  for (const Node& n : nodes_) sum += n.weight * moment_polynomial(kappa_, n.from_center) * n.f;
-  return sum;
+  return moments().sum.back();
 }
 
 void IntervalInversion::shift_full_contact_load(double P) {
@@ -423,7 +438,7 @@ void IntervalInversion::shift_full_contact_load(double P) {
 void IntervalInversion::prepare(double P) {
   load_ = P;
   const int M = order_ + 2;
-  const std::vector<double> cheb = ChebyshevPanel::points(M);
+  const std::vector<double>& cheb = ChebyshevPanel::cached_points(M);
   zone_tables_.clear(), gap_tables_.clear();
   pressure_samples_.clear(), gap_samples_.clear();
   const int intervals = static_cast<int>(zones_.size());
@@ -434,25 +449,29 @@ void IntervalInversion::prepare(double P) {
     for (const Node& n : nodes) RS += n.weight * S(point_at_offset(n.ref, n.offset));
     full_contact_constant_ = (P + 2 * RS) / (2 * pi);
   }
+  // S on every zone panel, with the pressure and its rounding at the table's points.
+  std::vector<double> amplification;
   for (int k = 0; k < intervals; ++k) {
     for (const Panel& panel : panels(interval(k))) {
       std::vector<double> values;
-      for (double xi : cheb) values.push_back(S(panel_point(panel, xi)));
+      for (double xi : cheb) {
+        const Point p = panel_point(panel, xi);
+        double terms;
+        const double S_at = S(p, &terms);
+        const double x = std::acos(std::clamp(p.s, -1.0, 1.0));
+        values.push_back(S_at);
+        pressure_samples_.push_back({x, pressure_from_S(p, x, k, S_at)});
+        amplification.push_back(amplification_from_S(S_at, terms));
+      }
       zone_tables_.push_back({panel, 0, {}, ChebyshevPanel(values)});
-    }
-  }
-  for (const PanelTable& table : zone_tables_) {
-    for (double xi : cheb) {
-      const double x = std::acos(std::clamp(panel_point(table.panel, xi).s, -1.0, 1.0));
-      pressure_samples_.push_back({x, pressure(x)});
     }
   }
   double highest = 0;
   for (const Sample& s : pressure_samples_) highest = std::max(highest, std::fabs(s.value));
   rounding_ = 0;
-  for (std::size_t i = 0; i < pressure_samples_.size(); i += 3) {
-    const Sample& s = pressure_samples_[i];
-    if (s.value != 0) rounding_ = std::max(rounding_, rounding_amplification(s.x) * std::fabs(s.value) / highest);
+  for (std::size_t i = 0; i < pressure_samples_.size(); ++i) {
+    const double value = std::fabs(pressure_samples_[i].value);
+    if (value != 0) rounding_ = std::max(rounding_, amplification[i] * value / highest);
   }
   const double scale = 2 / surface_.E;
   for (const Region& region : regions_off()) {
@@ -487,35 +506,38 @@ double IntervalInversion::pressure(double x) const {
     const Zone& z = zones_[intervals - 1 - k];
     if (x < z.lo || x > z.hi) continue;
     const Point p = point_at_angle(x);
-    double S_at = 0, xi;
+    double xi;
     for (const PanelTable& table : zone_tables_) {
       const Panel& panel = table.panel;
       if ((panel.anchor == 2 * k || panel.anchor == 2 * k + 1) && locate(panel, p, xi)) {
-        S_at = table.values(xi);
-        break;
+        return pressure_from_S(p, x, k, table.values(xi));
       }
     }
-    if (kappa_ < 0) return full_contact_constant_ - S_at;
-    // R~ = R sqrt(1 - s^2): the ends' factors, with those of s = +-1 cancelled.
-    double mantissa = 1;
-    long exponent = 0;
-    bool top = false, valley = false;
-    for (int e = 0; e < ends_; ++e) {
-      if (refs_[e].tau < 0) {
-        (refs_[e].s > 0 ? top : valley) = true;
-        continue;
-      }
-      int ex;
-      mantissa = std::frexp(mantissa * std::fabs(to_ref(p, e)), &ex);
-      exponent += ex;
-    }
-    const double h = std::sin(x / 2), c = std::cos(x / 2);
-    if (!top) mantissa *= 2 * h * h;     // 1 - s
-    if (!valley) mantissa *= 2 * c * c;  // 1 + s
-    if (exponent % 2 != 0) mantissa *= 2, exponent -= 1;
-    return -rho_[k] * std::ldexp(std::sqrt(mantissa), static_cast<int>(exponent / 2)) * S_at;
+    return pressure_from_S(p, x, k, 0);
   }
   return 0;
+}
+
+double IntervalInversion::pressure_from_S(const Point& p, double x, int k, double S_at) const {
+  if (kappa_ < 0) return full_contact_constant_ - S_at;
+  // R~ = R sqrt(1 - s^2): the ends' factors, with those of s = +-1 cancelled.
+  double mantissa = 1;
+  long exponent = 0;
+  bool top = false, valley = false;
+  for (int e = 0; e < ends_; ++e) {
+    if (refs_[e].tau < 0) {
+      (refs_[e].s > 0 ? top : valley) = true;
+      continue;
+    }
+    int ex;
+    mantissa = std::frexp(mantissa * std::fabs(to_ref(p, e)), &ex);
+    exponent += ex;
+  }
+  const double h = std::sin(x / 2), c = std::cos(x / 2);
+  if (!top) mantissa *= 2 * h * h;     // 1 - s
+  if (!valley) mantissa *= 2 * c * c;  // 1 + s
+  if (exponent % 2 != 0) mantissa *= 2, exponent -= 1;
+  return -rho_[k] * std::ldexp(std::sqrt(mantissa), static_cast<int>(exponent / 2)) * S_at;
 }
 
 double IntervalInversion::gap(double x) const {
@@ -531,26 +553,37 @@ double IntervalInversion::gap(double x) const {
 }
 
 double IntervalInversion::zone_load(std::size_t k) const {
+  if (zone_tables_.empty()) throw std::logic_error("IntervalInversion::zone_load: not prepared");
   const int i = static_cast<int>(zones_.size()) - 1 - static_cast<int>(k);
-  std::vector<Node> nodes;
-  add_nodes(interval(i), +1, 1, nodes, order_ + 1);
+  // Int R S over the interval's panels, with S from their tables (order_ + 1 points, between
+  // the tables' own).
+  const GaussLegendre& rule = gauss_legendre(order_ + 1);
   double sum = 0;
-  for (const Node& n : nodes) {
-    const double s = S(point_at_offset(n.ref, n.offset));
-    // q = -rho R S, or (C - S) R in full contact.
-    sum += n.weight * (kappa_ < 0 ? full_contact_constant_ - s : -rho_[i] * s);
+  std::vector<Node> nodes;
+  for (const PanelTable& table : zone_tables_) {
+    if (table.panel.anchor != 2 * i && table.panel.anchor != 2 * i + 1) continue;
+    nodes.clear();
+    add_panel_nodes(table.panel, +1, 1, nodes, order_ + 1);
+    for (std::size_t q = 0; q < nodes.size(); ++q) {
+      const double s = table.values(rule.x[q]);
+      // q = -rho R S, or (C - S) R in full contact.
+      sum += nodes[q].weight * (kappa_ < 0 ? full_contact_constant_ - s : -rho_[i] * s);
+    }
   }
   return sum;
 }
 
 double IntervalInversion::rounding_amplification(double x) const {
-  const Point p = point_at_angle(std::fabs(x));
   double terms;
-  const double value = S(p, &terms);
+  const double S_at = S(point_at_angle(std::fabs(x)), &terms);
+  return amplification_from_S(S_at, terms);
+}
+
+double IntervalInversion::amplification_from_S(double S_at, double terms) const {
   if (kappa_ < 0) {
-    return eps * (terms + std::fabs(full_contact_constant_)) / std::fabs(full_contact_constant_ - value);
+    return eps * (terms + std::fabs(full_contact_constant_)) / std::fabs(full_contact_constant_ - S_at);
   }
-  return eps * terms / std::fabs(value);
+  return eps * terms / std::fabs(S_at);
 }
 
 }  // namespace wavecontact::detail

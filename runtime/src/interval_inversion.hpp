@@ -176,6 +176,9 @@ class IntervalInversion {
   bool locate(const Panel& panel, const Point& p, double& xi) const;
   double product_R(const Point& p, int skip) const;  // prod |s - e|^(tau/2) over ends e != skip
   double S(const Point& p, double* terms = nullptr) const;
+  // The pressure at p (angle x, on s-interval k) and the rounding amplification, from S there.
+  double pressure_from_S(const Point& p, double x, int k, double S_at) const;
+  double amplification_from_S(double S_at, double terms) const;
   double f(double s) const { return 0.5 * surface_.E * surface_.slope(s); }
   double Pi(double s) const { return kappa_ > 0 ? 0 : kappa_ == 0 ? 1 : s; }
   double phase_outside(double s) const;  // i^(sum of tau over the ends above s)
@@ -185,9 +188,15 @@ class IntervalInversion {
   // interlace with (and so avoid) the nodes of S itself.
   void add_nodes(const Region& r, int weight_power, double sign, std::vector<Node>& out,
                  int order) const;
+  void add_panel_nodes(const Panel& panel, int weight_power, double sign, std::vector<Node>& out,
+                       int order) const;
   std::vector<Region> regions_off() const;
   Region interval(int k) const;
-  double moment_polynomial(int j, double from_center) const;
+  // M_0 .. M_kappa (the last for the load) and the sums of the magnitudes of their terms.
+  struct Moments {
+    std::vector<double> sum, magnitude;
+  };
+  Moments moments() const;
 
   SurfaceSlope surface_;
   std::vector<Zone> zones_;
