@@ -21,7 +21,7 @@ constexpr double two_pi = boost::math::double_constants::two_pi;
 // While continuing, the quadrature and Newton's method need only find the zones (to about
 // 1e-9); the final orders polish the ends (first_order, then order_step more until the
 // estimate meets the tolerance).
-constexpr int continuation_order = 8;
+constexpr int continuation_order = 6;
 constexpr double continuation_residual = 1e-10;
 constexpr int first_order = 12, order_step = 4, last_order = 40;
 constexpr int newton_iterations = 30;
@@ -36,6 +36,7 @@ constexpr double rounding_limit = 1e-8;  // of the pressure: beyond it the zones
 // A new zone starts about this wide (x^) relative to the surface's resolution.
 constexpr double birth_width = 1.0 / 64;
 constexpr double smallest_step = 1e-9;
+constexpr double onset_margin = 1e-4;  // far above the onset's error at the continuation order (1e-7)
 
 // Every end of the zones in increasing x^, with 0 and pi around them.
 std::vector<double> all_ends(const std::vector<Zone>& zones) {
@@ -94,6 +95,21 @@ HeightScan scan_height(const SurfaceSlope& surface) {
   return scan;
 }
 
+// The load (normalised) from which the contact is full, at a quadrature order. In full
+// contact p = C - S with C fixed by the load, so p = P/(2 pi) + p0 and the onset is -2 pi min p0.
+double full_contact_onset(const SurfaceSlope& surface, int order) {
+  IntervalInversion full(surface, {{0, pi}}, order, IntervalInversion::Grading::evaluation);
+  full.prepare(0);
+  double p0 = std::numeric_limits<double>::infinity(), x0 = 0;
+  for (const auto& s : full.pressure_samples()) {
+    if (s.value < p0) p0 = s.value, x0 = s.x;
+  }
+  const double h = surface.resolution / 4;
+  const double p_min = boost::math::tools::brent_find_minima(
+      [&](double x) { return full.pressure(x); }, std::max(0.0, x0 - h), std::min(pi, x0 + h), 52).second;
+  return std::max(0.0, -two_pi * std::min(p0, p_min));
+}
+
 // The local minima of f (x^ in [0, pi]) from its samples that may reach below `level`: every
 // sample lower than its neighbours (or an end sample lower than its one neighbour), refined by
 // Brent's method between them unless even a dip as deep again as its neighbours rise stays
@@ -130,18 +146,12 @@ ContactSolver::ContactSolver(SurfaceSlope surface, double tolerance, int order)
   const HeightScan scan = scan_height(surface_);
   top_angle_ = scan.top_angle;
   height_range_ = scan.range;
-  // Full contact: p = C - S with C fixed by the load, so p = P/(2 pi) + p0 and the onset is
-  // -2 pi min p0.
-  IntervalInversion full(surface_, {{0, pi}}, continuation_order, IntervalInversion::Grading::evaluation);
-  full.prepare(0);
-  double p0 = std::numeric_limits<double>::infinity(), x0 = 0;
-  for (const auto& s : full.pressure_samples()) {
-    if (s.value < p0) p0 = s.value, x0 = s.x;
-  }
-  const double h = surface_.resolution / 4;
-  const double p_min = boost::math::tools::brent_find_minima(
-      [&](double x) { return full.pressure(x); }, std::max(0.0, x0 - h), std::min(pi, x0 + h), 52).second;
-  full_contact_load_ = std::max(0.0, -two_pi * std::min(p0, p_min));
+  onset_estimate_ = full_contact_onset(surface_, continuation_order);
+}
+
+double ContactSolver::full_contact_load() const {
+  if (!onset_) onset_ = full_contact_onset(surface_, first_order);
+  return *onset_;
 }
 
 ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, double P, int order,
@@ -478,7 +488,7 @@ SolvedContact ContactSolver::refine(const State& state) const {
     return {at_order, state.P, fixed_order_, error, result};
   }
   // 12, 16, ... until the change from the previous order meets the tolerance; from the
-  // continuation's order 8 when the tolerance allows (order 8 errs by about 1e-10).
+  // continuation's order 6 when the tolerance allows (order 6 errs by 1e-11 to 2e-8).
   const int start = tolerance_ >= 1e-8 ? continuation_order : first_order;
   std::shared_ptr<const IntervalInversion> previous = solve_at(start);
   for (int order = start + order_step;; order += order_step) {
@@ -498,7 +508,11 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
   std::optional<SolvedContact> full;  // full contact, p = P/(2 pi) + p0: one solution for every load
   for (std::size_t index : order) {
     const double target = loads[index];
-    if (target >= full_contact_load_) {
+    // The estimate decides unless the load is within its error of the onset.
+    const bool full_contact = std::fabs(target - onset_estimate_) > onset_margin * onset_estimate_
+                                  ? target > onset_estimate_
+                                  : target >= full_contact_load();
+    if (full_contact) {
       if (!full) {
         full = refine({{{0, pi}}, target, {}, nullptr});
       } else {

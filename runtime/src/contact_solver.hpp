@@ -38,8 +38,9 @@ class ContactSolver {
   // quadrature order instead (the estimate is then against order + 2).
   ContactSolver(SurfaceSlope surface, double tolerance, int order = 0);
 
-  // The load (normalised) from which the contact is full.
-  double full_contact_load() const { return full_contact_load_; }
+  // The load (normalised) from which the contact is full, at the polishing order (computed
+  // on first use).
+  double full_contact_load() const;
 
   // The contact at each load (any order), by one continuation through them.
   std::vector<SolvedContact> solve(const std::vector<double>& loads) const;
@@ -89,7 +90,8 @@ class ContactSolver {
   int fixed_order_;
   double height_range_;       // max y - min y: the gap scale
   double top_angle_;          // x^ of the highest point
-  double full_contact_load_;  // normalised
+  double onset_estimate_;                // full contact's onset at the continuation order
+  mutable std::optional<double> onset_;  // and polished
 };
 
 // Whether the single zone [0, a^] (a^ in (0, pi)) carrying its own load is the contact:
