@@ -9,7 +9,8 @@ seconds=${1:-600}
 # CLN and GiNaC keep a few start-up allocations to the end (tests/sanitizers/lsan.supp).
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp"
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DWAVECONTACT_FUZZ=ON \
-  -DWAVECONTACT_BUILD_TESTS=OFF -DWAVECONTACT_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
+  -DWAVECONTACT_BUILD_TESTS=OFF -DWAVECONTACT_BUILD_BENCH=OFF -DWAVECONTACT_BUILD_PYTHON=OFF \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 cmake --build build-fuzz -j"$(nproc)" --target cli_fuzzer derive_fuzzer
 for target in cli derive; do
   timeout=30  # a multi-zone contact takes seconds under the sanitizers

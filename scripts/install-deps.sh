@@ -14,6 +14,8 @@ packages=(
   gnuplot-nox                      # reproduce: PNG plots
   clang-14 libclang-rt-14-dev      # fuzzing (libFuzzer) and sanitizers
   libbenchmark-dev python3-sympy   # bench/ (Google Benchmark; SymPy is the baseline)
+  pybind11-dev python3-dev python3-numpy  # python/: the extension module, for Debian's python3
+  python3-pytest python3-matplotlib       # tests/python, examples/sweep.py
 )
 
 missing=()

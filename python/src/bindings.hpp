@@ -1,0 +1,59 @@
+// The pieces of the `wavecontact` Python module (python/src/bind_*.cpp) and what they share:
+// the scalar-or-array convention of every evaluator that takes x.
+#pragma once
+
+#include <string>
+
+#include <Eigen/Core>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+namespace wavecontact::python {
+
+namespace py = pybind11;
+
+void bind_waviness(py::module_& m);
+void bind_two_scale(py::module_& m);
+void bind_profile(py::module_& m);
+void bind_contact(py::module_& m);
+
+// x as a C-contiguous float64 array: the caller's own memory when it already is one (no
+// copy), otherwise converted once. Whatever NumPy cannot read as numbers is a ValueError
+// naming the function and the parameter; non-finite values are the runtime's to refuse.
+inline py::array_t<double, py::array::c_style> as_points(const py::handle& x, const char* function,
+                                                         const char* name) {
+  if (!x.is_none()) {  // NumPy would read None as nan
+    auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(x);
+    if (points) return points;
+  }
+  throw py::value_error(std::string(function) + ": " + name + " must be a number or an array of numbers, not " +
+                        std::string(py::str(py::type::of(x).attr("__name__"))));
+}
+
+// An evaluator of one point applied to a float, or to an array of any shape (the result has
+// that shape: one allocation). kernel(x, p) fills p from x without the GIL.
+template <class Scalar, class Kernel>
+py::object scalar_or_array(const py::handle& x, const char* function, const char* name, Scalar scalar,
+                           Kernel kernel) {
+  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) return py::float_(scalar(x.cast<double>()));
+  const auto points = as_points(x, function, name);
+  py::array_t<double> result(std::vector<py::ssize_t>(points.shape(), points.shape() + points.ndim()));
+  const Eigen::Map<const Eigen::ArrayXd> in(points.data(), points.size());
+  Eigen::Map<Eigen::ArrayXd> out(result.mutable_data(), result.size());
+  {
+    py::gil_scoped_release release;
+    kernel(in, out);
+  }
+  return std::move(result);
+}
+
+// The same for an evaluator that has only a scalar form: the loop runs without the GIL.
+template <class Scalar>
+py::object scalar_or_array(const py::handle& x, const char* function, const char* name, Scalar scalar) {
+  return scalar_or_array(x, function, name, scalar,
+                         [&](const Eigen::Map<const Eigen::ArrayXd>& in, Eigen::Map<Eigen::ArrayXd>& out) {
+                           for (Eigen::Index i = 0; i < in.size(); ++i) out[i] = scalar(in[i]);
+                         });
+}
+
+}  // namespace wavecontact::python
