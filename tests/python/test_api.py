@@ -1,0 +1,58 @@
+"""The module's surface: the stubs name exactly what it holds, everything is documented, the
+version is the CMake project's."""
+import ast
+import inspect
+import os
+
+import wavecontact as wc
+
+
+def public(obj):
+    return {n for n in dir(obj) if not n.startswith("_")}
+
+
+def stub_tree(source_dir):
+    with open(os.path.join(source_dir, "python", "wavecontact", "__init__.pyi")) as f:
+        return ast.parse(f.read())
+
+
+def stub_names(body):
+    names = set()
+    for node in body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, ast.AnnAssign):
+            names.add(node.target.id)
+    return {n for n in names if not n.startswith("_")}
+
+
+def test_version():
+    assert wc.__version__ == os.environ["WAVECONTACT_VERSION"]
+
+
+def test_stubs_name_exactly_the_module(source_dir):
+    tree = stub_tree(source_dir)
+    module_names = public(wc)
+    assert stub_names(tree.body) == module_names
+    for node in tree.body:
+        if not isinstance(node, ast.ClassDef):
+            continue
+        cls = getattr(wc, node.name)
+        if hasattr(cls, "__members__"):  # a pybind11 enum: its values, name and value
+            members = set(cls.__members__) | {"name", "value"}
+        else:
+            members = public(cls)
+        assert stub_names(node.body) == members, node.name
+
+
+def test_everything_is_documented():
+    undocumented = [name for name in public(wc) if not (inspect.getdoc(getattr(wc, name)) or "").strip()]
+    for name in public(wc):
+        cls = getattr(wc, name)
+        if not inspect.isclass(cls) or hasattr(cls, "__members__"):
+            continue
+        for member in public(cls):
+            if callable(inspect.getattr_static(cls, member)) and not (inspect.getdoc(getattr(cls, member)) or "").strip():
+                undocumented.append(f"{name}.{member}")
+    assert not undocumented, f"no docstring: {undocumented}"
+    assert "an array of any shape" in wc.pressure.__doc__

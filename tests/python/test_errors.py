@@ -1,0 +1,63 @@
+"""Invalid input is a ValueError naming the function and the parameter; nothing crashes."""
+import math
+
+import numpy as np
+import pytest
+
+import wavecontact as wc
+
+W = wc.WavinessParams(H1=1, b1=10, m=2, E=1)
+SURFACE = wc.Surface(wc.WavinessParams(H1=1, b1=10, m=0, E=1), [wc.Harmonic(H=0.15, n=8)])
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: wc.WavinessParams(H1=-1, b1=10, m=2, E=1), "H1"),
+    (lambda: wc.WavinessParams(H1=1, b1=10, m=-2, E=1), "m"),
+    (lambda: wc.WavinessParams(H1=1, b1=math.nan, m=2, E=1), "b1"),
+    (lambda: wc.RoughnessParams(H2=0.1, n=7), "n"),
+    (lambda: wc.pressure(W, -1.0, 0.0), "a = -1"),
+    (lambda: wc.pressure(W, 4.0, math.inf), "x = inf"),
+    (lambda: wc.pressure(W, 4.0, np.array([0.0, np.nan])), "x = nan"),
+    (lambda: wc.pressure(W, 4.0, "abc"), "x must be a number or an array of numbers"),
+    (lambda: wc.pressure(W, 4.0, [1.0, "a"]), "x must be a number or an array of numbers"),
+    (lambda: wc.pressure(W, 4.0, [[1.0, 2.0], [3.0]]), "x must be a number or an array of numbers"),
+    (lambda: wc.pressure(W, 4.0, None), "x must be a number or an array of numbers"),
+    (lambda: wc.load(W, 11.0), "a = 11"),
+    (lambda: wc.contact_half_width(W, 1e9), "P"),
+    (lambda: wc.kcoef(3), "n = 3"),
+    (lambda: wc.kcoef(5000), "n = 5000"),
+    (lambda: wc.Profile("no_such_profile", b1=10, E=1), "no_such_profile"),
+    (lambda: wc.Profile("two_harmonic", b1=10, E=1, H1=1), "H3"),
+    (lambda: wc.Profile("two_harmonic", b1=10, E=1, H1=1, H3=0.1, H7=2), "H7"),
+    (lambda: wc.solve_contact(SURFACE, -1.0), "P = -1"),
+    (lambda: wc.solve_contact(SURFACE, [0.3, math.nan]), "P = nan"),
+    (lambda: wc.solve_contact(SURFACE, 0.3, tolerance=0.5), "tolerance"),
+    (lambda: wc.solve_contact(SURFACE, 0.3, order=2), "order"),
+    (lambda: wc.solve_contact(SURFACE, "heavy"), "P must be a number or an array of numbers"),
+    (lambda: wc.single_zone_check(SURFACE, 20.0), "a = 20"),
+    (lambda: wc.Surface(W, [wc.Harmonic(H=0.1, n=0)]), "n = 0"),
+])
+def test_value_error(call, message):
+    with pytest.raises(ValueError, match=None) as error:
+        call()
+    assert message in str(error.value), f"message {str(error.value)!r} does not name {message!r}"
+
+
+def test_a_zone_that_is_not_the_contact_is_refused():
+    # The seed's Fig. 7 parameters: at a = 0.5 the neighbouring asperity penetrates (MATH.md fact 10).
+    c = wc.TwoScaleContact(
+        wc.TwoScaleParams(wc.WavinessParams(H1=1, b1=10, m=0, E=1), wc.RoughnessParams(H2=0.15, n=8)), 0.5)
+    assert not c.admissible and c.lowest_gap < -0.03
+    with pytest.raises(ValueError, match="not admissible|penetrat"):
+        c.pressure(0.0)
+    with pytest.raises(ValueError):
+        c.pressure(np.zeros(3))
+
+
+def test_wrong_types_are_type_errors_not_crashes():
+    with pytest.raises(TypeError):
+        wc.pressure("params", 4.0, 0.0)
+    with pytest.raises(TypeError):
+        wc.Surface(42)
+    with pytest.raises(TypeError):
+        wc.kcoef(4.5)
