@@ -7,11 +7,21 @@ cd "$(dirname "$0")/.."
 [ -x build/bench/wavecontact_bench ] || scripts/build.sh
 build/bench/wavecontact_bench --benchmark_out=build/bench/results.json \
   --benchmark_out_format=json "$@"
-python3 - build/bench/results.json <<'PY'
+# The Python module's figure (timeit), where it is built: bench/python_pressure.py.
+python_figure=build/bench/python_pressure.txt
+rm -f "$python_figure"
+if [ -d build/python/wavecontact ]; then
+  PYTHONPATH=build/python /usr/bin/python3 bench/python_pressure.py > "$python_figure"
+fi
+python3 - build/bench/results.json "$python_figure" <<'PY'
 import json
+import os
 import sys
 
 results = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+python_ns = None
+if os.path.exists(sys.argv[2]):
+    python_ns = float(open(sys.argv[2]).read().split()[1])
 
 def per_item_ns(name):
     b = results.get(name)
@@ -50,6 +60,10 @@ for label, measure, ours_name, baselines in rows:
             print(f"{label:40} {'n/a':>12} {baseline_label:>24} {'n/a':>12}")
             continue
         print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
+ours = per_item_ns("BM_waviness_pressure_generated/1000000")
+if python_ns is not None and ours is not None:
+    print(f"{'pressure 1e6 points from Python, ns/point':40} {python_ns:12.4g} {'C++ array API':>24} {ours:12.4g}"
+          f" {python_ns / ours:7.2f}x (Python / C++)")
 for label, name in (("load P(a), ns/call", "BM_load"), ("inverse a(P) for a <= b1/2, ns/call", "BM_single_asperity_half_width"),
                     ("all zones for P, given LoadCurve, ns", "BM_equilibria"),
                     ("LoadCurve (turning points of P(a)), ns", "BM_load_curve"),
