@@ -15,6 +15,7 @@
 #include "periodic_regime.hpp"
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
+#include "wavecontact/isa.hpp"
 #include "waviness.hpp"  // generated/
 #include "pressure_simd.hpp"
 
@@ -101,15 +102,9 @@ Eigen::ArrayXd pressure(const WavinessParams& params, double a,
 
 namespace detail {
 
-bool simd_pressure_available() {
-  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return available;
-}
+bool simd_pressure_available() { return array_kernel_isa() != Isa::scalar; }
 
-bool avx512_available() {
-  static const bool available = __builtin_cpu_supports("avx512f");
-  return available;
-}
+bool avx512_available() { return array_kernel_isa() == Isa::avx512; }
 
 }  // namespace detail
 
