@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "high_precision.hpp"
+#include "isa_under_test.hpp"
 #include "waviness.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/stability.hpp"

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "isa_under_test.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
