@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "wavecontact/isa.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/waviness.hpp"
 
@@ -40,6 +41,15 @@ void bind_waviness(py::module_& m) {
       .def_readonly("m", &WavinessParams::m, "shape parameter")
       .def_readonly("E", &WavinessParams::E, "reduced modulus E* [pressure]")
       .def("__repr__", &repr);
+
+  py::enum_<Isa>(m, "Isa", "The instruction set of the array kernels (wavecontact/isa.hpp).")
+      .value("scalar", Isa::scalar, "the scalar loops")
+      .value("avx2", Isa::avx2, "AVX2 + FMA kernels")
+      .value("avx512", Isa::avx512, "the same with sincospi 8 wide");
+  m.def("array_kernel_isa", &array_kernel_isa,
+        "The path the array kernels run on: the best the CPU has, or WAVECONTACT_ISA "
+        "(scalar, avx2, avx512) capped at it, read at the first array evaluation.");
+  m.def("cpu_isa", &cpu_isa, "The best array-kernel path this CPU has.");
 
   m.def("reduced_modulus", &reduced_modulus, "E1"_a, "nu1"_a, "E2"_a, "nu2"_a,
         "Eq. 7, plane strain: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.");

@@ -17,6 +17,17 @@ class Form:
     value: int
     def __init__(self, value: int) -> None: ...
 
+class Isa:
+    scalar: Isa
+    avx2: Isa
+    avx512: Isa
+    name: str
+    value: int
+    def __init__(self, value: int) -> None: ...
+
+def array_kernel_isa() -> Isa: ...
+def cpu_isa() -> Isa: ...
+
 # --- the wave curve (waviness.hpp, stability.hpp) ---------------------------------------
 class WavinessParams:
     H1: float
