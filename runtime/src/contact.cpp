@@ -8,8 +8,10 @@
 #include <boost/math/tools/minima.hpp>
 
 #include "contact_solver.hpp"
+#include "parallel.hpp"
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
+#include "wavecontact/threads.hpp"
 
 namespace wavecontact {
 
@@ -55,7 +57,12 @@ double Contact::pressure(double x) const {
 
 void Contact::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const {
   detail::require_points("wavecontact::Contact::pressure", x, p.size());
-  for (Eigen::Index i = 0; i < x.size(); ++i) p[i] = pi / b1_ * inversion_->pressure(pi * reduce_to_period(x[i], b1_) / b1_);
+  const double* xs = x.data();
+  double* ps = p.data();
+  detail::for_each_chunk(static_cast<std::size_t>(x.size()), 1, parallel_points_costly,
+                         [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) ps[i] = pi / b1_ * inversion_->pressure(pi * reduce_to_period(xs[i], b1_) / b1_);
+  });
 }
 
 double Contact::gap(double x) const {

@@ -14,11 +14,13 @@
 #include <boost/math/tools/roots.hpp>
 #include <boost/multiprecision/cpp_int.hpp>
 
+#include "parallel.hpp"
 #include "pressure_simd.hpp"
 #include "roughness_evaluators.hpp"  // generated/
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/contact.hpp"
+#include "wavecontact/threads.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace wavecontact {
@@ -202,14 +204,19 @@ double TwoScaleContact::roughness_pressure(double x) const {
 void TwoScaleContact::add_roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
                                              Eigen::Ref<Eigen::ArrayXd> p) const {
   const WavinessParams& w = params_.waviness;
-  if (form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_pressure_available()) {
-    const int n = params_.roughness.n;
-    const double scale = pi / w.b1 * w.E * params_.roughness.H2 * n / 2;
-    detail::simd_add_roughness_pressure({w.b1, a_, scale, legendre_.data(), n}, x.data(), p.data(),
-                                        static_cast<std::size_t>(x.size()));
-    return;
-  }
-  for (Eigen::Index i = 0; i < x.size(); ++i) p[i] += roughness_pressure(x[i]);
+  const bool simd = form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_pressure_available();
+  const int n = params_.roughness.n;
+  const detail::RoughnessZone zone{w.b1, a_, pi / w.b1 * w.E * params_.roughness.H2 * n / 2, legendre_.data(), n};
+  const double* xs = x.data();
+  double* ps = p.data();
+  detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, parallel_points,
+                         [&](std::size_t begin, std::size_t end) {
+    if (simd) {
+      detail::simd_add_roughness_pressure(zone, xs + begin, ps + begin, end - begin);
+    } else {
+      for (std::size_t i = begin; i < end; ++i) ps[i] += roughness_pressure(xs[i]);
+    }
+  });
 }
 
 void TwoScaleContact::roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,

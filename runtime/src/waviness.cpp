@@ -12,10 +12,12 @@
 #include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/tools/roots.hpp>
 
+#include "parallel.hpp"
 #include "periodic_regime.hpp"
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/isa.hpp"
+#include "wavecontact/threads.hpp"
 #include "waviness.hpp"  // generated/
 #include "pressure_simd.hpp"
 
@@ -85,12 +87,19 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
   require_half_width(function, params, a, form);
   detail::require_points(function, x, p.size());
   const ZoneAngles zone = zone_angles(a, params.b1);
-  if (!periodic_quadrature(params, a, form) && detail::simd_pressure_available()) {
-    detail::simd_pressure({params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa}, form,
-                          x.data(), p.data(), static_cast<std::size_t>(x.size()));
-    return;
-  }
-  for (Eigen::Index i = 0; i < x.size(); ++i) p[i] = pressure_at(params, a, zone, x[i], form);
+  const bool simd = !periodic_quadrature(params, a, form) && detail::simd_pressure_available();
+  const detail::WavinessZone simd_zone{params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa};
+  const double* xs = x.data();
+  double* ps = p.data();
+  const std::size_t min_points = periodic_quadrature(params, a, form) ? parallel_points_costly : parallel_points;
+  detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, min_points,
+                         [&](std::size_t begin, std::size_t end) {
+    if (simd) {
+      detail::simd_pressure(simd_zone, form, xs + begin, ps + begin, end - begin);
+    } else {
+      for (std::size_t i = begin; i < end; ++i) ps[i] = pressure_at(params, a, zone, xs[i], form);
+    }
+  });
 }
 
 Eigen::ArrayXd pressure(const WavinessParams& params, double a,

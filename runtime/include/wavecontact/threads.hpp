@@ -1,0 +1,25 @@
+// The threads of the array evaluations (waviness.hpp, two_scale.hpp, contact.hpp): a large
+// enough array is split into contiguous chunks of whole SIMD blocks, one per thread. Every
+// point is computed as it would be alone, so the results are the same bits whatever the
+// number of threads.
+#pragma once
+
+#include <cstddef>
+
+namespace wavecontact {
+
+// Below this many points an array is evaluated on the calling thread: the closed forms (a few
+// ns a point), and the evaluators that cost microseconds a point (the quadrature beyond
+// b1/2, the contact's pressure).
+inline constexpr std::size_t parallel_points = 32768;
+inline constexpr std::size_t parallel_points_costly = 64;
+
+// The most threads an array evaluation uses: set_array_kernel_threads(), else the environment
+// variable WAVECONTACT_THREADS (read once), else the CPU's hardware threads.
+int array_kernel_threads();
+
+// Caps the threads (1: the calling thread only); 0 returns to the default above. Throws
+// std::domain_error for a negative count.
+void set_array_kernel_threads(int threads);
+
+}  // namespace wavecontact
