@@ -1,0 +1,72 @@
+// The array evaluations split across threads (wavecontact/threads.hpp) give the same bits
+// whatever the number of threads, on every array path.
+#define BOOST_TEST_MODULE threads
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <stdexcept>
+
+#include "isa_under_test.hpp"
+#include "wavecontact/contact.hpp"
+#include "wavecontact/threads.hpp"
+#include "wavecontact/two_scale.hpp"
+#include "wavecontact/waviness.hpp"
+
+using namespace wavecontact;
+
+namespace {
+
+// f(x, p) with 1 thread, then with 2, 3 and 7: the same bytes. Restores the default.
+void same_bits_whatever_the_threads(const std::function<void(const Eigen::ArrayXd&, Eigen::ArrayXd&)>& f,
+                                    const Eigen::ArrayXd& x, const char* what) {
+  Eigen::ArrayXd alone(x.size()), split(x.size());
+  set_array_kernel_threads(1);
+  f(x, alone);
+  for (int threads : {2, 3, 7}) {
+    set_array_kernel_threads(threads);
+    split.setConstant(std::nan(""));
+    f(x, split);
+    BOOST_TEST(std::memcmp(alone.data(), split.data(), sizeof(double) * static_cast<std::size_t>(x.size())) == 0,
+               what << ": " << threads << " threads differ from one");
+  }
+  set_array_kernel_threads(0);
+}
+
+// Enough points to be split, and not a whole number of blocks.
+const Eigen::ArrayXd points = Eigen::ArrayXd::LinSpaced(3 * static_cast<Eigen::Index>(parallel_points) + 77, -4.5, 4.5);
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(waviness_pressure) {
+  const WavinessParams w{1.0, 10.0, 2.0, 1.0};
+  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 4.0, x, p); }, points,
+                                 "a <= b1/2");
+  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 4.0, x, p, Form::paper); },
+                                 points, "printed");
+  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 6.0, x, p); },
+                                 Eigen::ArrayXd::LinSpaced(5 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -6, 6),
+                                 "beyond b1/2 (quadrature)");
+}
+
+BOOST_AUTO_TEST_CASE(two_scale_pressure) {
+  const TwoScaleContact c({{1.0, 10.0, 0.0, 1.0}, {0.001, 64}}, 4.5);
+  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { c.pressure(x, p); }, points,
+                                 "two-scale");
+}
+
+BOOST_AUTO_TEST_CASE(contact_pressure) {
+  const Contact c = solve_contact(Surface(WavinessParams{1.0, 10.0, 0.0, 1.0}, {{0.15, 8}}), 0.3 * M_PI);
+  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { c.pressure(x, p); },
+                                 Eigen::ArrayXd::LinSpaced(50 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -10, 10),
+                                 "contact");
+}
+
+BOOST_AUTO_TEST_CASE(thread_count_is_validated) {
+  BOOST_CHECK_THROW(set_array_kernel_threads(-1), std::domain_error);
+  set_array_kernel_threads(3);
+  BOOST_TEST(array_kernel_threads() == 3);
+  set_array_kernel_threads(0);
+  BOOST_TEST(array_kernel_threads() >= 1);
+}
