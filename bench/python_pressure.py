@@ -15,6 +15,7 @@ import wavecontact as wc
 
 params = wc.WavinessParams(H1=1, b1=10, m=2, E=1)
 a = 4.0
+wc.set_array_kernel_threads(1)  # as the C++ figure
 x = np.linspace(-0.999 * a, 0.999 * a, 1_000_000)
 repeats = int(sys.argv[1]) if len(sys.argv) > 1 else 20
 wc.pressure(params, a, x)

@@ -16,6 +16,7 @@
 #include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
 #include "wavecontact/stability.hpp"
+#include "wavecontact/threads.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
@@ -53,16 +54,33 @@ int nodes_for_accuracy(const Rhs& rhs, const Closed& closed, double a, double b1
   }
 }
 
+// One thread (as every baseline here); BM_waviness_pressure_threads for more.
 void BM_waviness_pressure_generated(benchmark::State& state) {
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
   Eigen::ArrayXd p(xs.size());  // the caller's buffer: no allocation in the loop
+  set_array_kernel_threads(1);
   for (auto _ : state) {
     pressure(waviness, half_width, xs, p);
     benchmark::DoNotOptimize(p.data());
   }
+  set_array_kernel_threads(0);
   state.SetItemsProcessed(state.iterations() * xs.size());
 }
 BENCHMARK(BM_waviness_pressure_generated)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+// The same 10^6 points on 1, 2, ... threads (wavecontact/threads.hpp).
+void BM_waviness_pressure_threads(benchmark::State& state) {
+  const Eigen::ArrayXd xs = zone_points(1000000, half_width);
+  Eigen::ArrayXd p(xs.size());
+  set_array_kernel_threads(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    pressure(waviness, half_width, xs, p);
+    benchmark::DoNotOptimize(p.data());
+  }
+  set_array_kernel_threads(0);
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_waviness_pressure_threads)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 // The same generated formula, its atoms from scalar libm sin/cos, into the same buffer:
 // the "scalar libm" baseline for the vectorised kernel.
@@ -129,10 +147,12 @@ void BM_roughness_pressure_generated(benchmark::State& state) {
   const TwoScaleContact contact(rough(n), half_width);
   const Eigen::ArrayXd xs = zone_points(100000, half_width);
   Eigen::ArrayXd p(xs.size());
+  set_array_kernel_threads(1);  // as the baselines
   for (auto _ : state) {
     contact.roughness_pressure(xs, p);
     benchmark::DoNotOptimize(p.data());
   }
+  set_array_kernel_threads(0);
   state.SetItemsProcessed(state.iterations() * xs.size());
 }
 BENCHMARK(BM_roughness_pressure_generated)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);

@@ -60,6 +60,9 @@ for label, measure, ours_name, baselines in rows:
             print(f"{label:40} {'n/a':>12} {baseline_label:>24} {'n/a':>12}")
             continue
         print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
+one, two = time_ns("BM_waviness_pressure_threads/1/real_time"), time_ns("BM_waviness_pressure_threads/2/real_time")
+if one is not None and two is not None:
+    print(f"{'waviness 1e6 points, 2 threads, ns':40} {two:12.4g} {'1 thread':>24} {one:12.4g} {one / two:7.2f}x")
 ours = per_item_ns("BM_waviness_pressure_generated/1000000")
 if python_ns is not None and ours is not None:
     print(f"{'pressure 1e6 points from Python, ns/point':40} {python_ns:12.4g} {'C++ array API':>24} {ours:12.4g}"

@@ -5,6 +5,7 @@
 #include "bindings.hpp"
 #include "wavecontact/isa.hpp"
 #include "wavecontact/stability.hpp"
+#include "wavecontact/threads.hpp"
 #include "wavecontact/waviness.hpp"
 
 namespace wavecontact::python {
@@ -50,6 +51,11 @@ void bind_waviness(py::module_& m) {
         "The path the array kernels run on: the best the CPU has, or WAVECONTACT_ISA "
         "(scalar, avx2, avx512) capped at it, read at the first array evaluation.");
   m.def("cpu_isa", &cpu_isa, "The best array-kernel path this CPU has.");
+  m.def("array_kernel_threads", &array_kernel_threads,
+        "The most threads an array evaluation uses: set_array_kernel_threads(), else WAVECONTACT_THREADS, "
+        "else the CPU's hardware threads. Results are the same bits whatever the count.");
+  m.def("set_array_kernel_threads", &set_array_kernel_threads, "threads"_a,
+        "Caps the threads of the array evaluations (1: the calling thread only; 0: the default).");
 
   m.def("reduced_modulus", &reduced_modulus, "E1"_a, "nu1"_a, "E2"_a, "nu2"_a,
         "Eq. 7, plane strain: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.");
