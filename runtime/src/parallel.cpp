@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdlib>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -59,10 +60,16 @@ void for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points
   }
   const std::size_t per_thread = (blocks + threads - 1) / threads * block;
   std::vector<std::thread> workers;
-  for (std::size_t begin = per_thread; begin < count; begin += per_thread) {
-    workers.emplace_back(body, begin, std::min(count, begin + per_thread));
+  std::size_t begin = per_thread;
+  for (; begin < count; begin += per_thread) {
+    try {
+      workers.emplace_back(body, begin, std::min(count, begin + per_thread));
+    } catch (const std::system_error&) {
+      break;  // no thread to be had: the calling thread takes the rest
+    }
   }
   body(0, std::min(count, per_thread));  // the calling thread takes the first chunk
+  for (; begin < count; begin += per_thread) body(begin, std::min(count, begin + per_thread));
   for (std::thread& worker : workers) worker.join();
 }
 
