@@ -79,6 +79,11 @@ void bind_contact(py::module_& m) {
           return py::cast(solve_contact(surface, load, options));
         }
         const auto loads = as_points(P, "wavecontact.solve_contact", "P");
+        if (loads.ndim() == 0 && !py::isinstance<py::array>(P)) {  // a NumPy scalar: one load
+          const double load = *loads.data();
+          py::gil_scoped_release release;
+          return py::cast(solve_contact(surface, load, options));
+        }
         const std::vector<double> values(loads.data(), loads.data() + loads.size());
         std::vector<Contact> contacts;
         {

@@ -30,13 +30,14 @@ inline py::array_t<double, py::array::c_style> as_points(const py::handle& x, co
                         std::string(py::str(py::type::of(x).attr("__name__"))));
 }
 
-// An evaluator of one point applied to a float, or to an array of any shape (the result has
-// that shape: one allocation). kernel(x, p) fills p from x without the GIL.
+// An evaluator of one point applied to a number (a float back), or to an array of any shape
+// (an array of that shape back: one allocation). kernel(x, p) fills p from x without the GIL.
 template <class Scalar, class Kernel>
 py::object scalar_or_array(const py::handle& x, const char* function, const char* name, Scalar scalar,
                            Kernel kernel) {
   if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) return py::float_(scalar(x.cast<double>()));
   const auto points = as_points(x, function, name);
+  if (points.ndim() == 0 && !py::isinstance<py::array>(x)) return py::float_(scalar(*points.data()));  // numpy.int64(3)
   py::array_t<double> result(std::vector<py::ssize_t>(points.shape(), points.shape() + points.ndim()));
   const Eigen::Map<const Eigen::ArrayXd> in(points.data(), points.size());
   Eigen::Map<Eigen::ArrayXd> out(result.mutable_data(), result.size());

@@ -52,6 +52,8 @@ def test_inputs_numpy_reads_as_numbers():
     strided = np.linspace(-3, 3, 26)[::2]
     assert np.array_equal(wc.pressure(W, 4.0, strided), wc.pressure(W, 4.0, np.ascontiguousarray(strided)))
     assert wc.pressure(W, 4.0, np.float64(1.0)) == wc.pressure(W, 4.0, 1.0)
+    assert isinstance(wc.pressure(W, 4.0, np.int64(1)), float)
+    assert wc.pressure(W, 4.0, np.int64(1)) == wc.pressure(W, 4.0, 1.0)
     assert wc.pressure(W, 4.0, np.empty(0)).shape == (0,)
     assert wc.pressure(W, 4.0, np.array(1.0)).shape == ()
 
@@ -78,3 +80,15 @@ def test_array_kernel_releases_the_gil():
     counter.join()
     during = sum(start < t < end for t in ticks)
     assert during >= 3, f"the other thread ran {during} times in {end - start:.4f} s of kernel"
+
+
+def test_one_load_or_many():
+    surface = wc.Surface(wc.WavinessParams(H1=1, b1=10, m=10, E=1))
+    one = wc.solve_contact(surface, 6)
+    assert isinstance(one, wc.Contact)
+    assert isinstance(wc.solve_contact(surface, np.float64(6.0)), wc.Contact)
+    assert isinstance(wc.solve_contact(surface, np.int64(6)), wc.Contact)
+    many = wc.solve_contact(surface, np.array([6.0, 2.0]))
+    assert [c.load for c in many] == [6.0, 2.0]
+    # Another continuation path to the same contact: the same within the tolerance (1e-10).
+    assert abs(many[0].pressure(0.0) - one.pressure(0.0)) <= 1e-10 * one.max_pressure
