@@ -102,6 +102,49 @@ std::vector<RootTerm> root_terms(const RadicalSum& closed, const Radicals& radic
 
 namespace {
 
+// p(s) with s = (1 - c)/(1 + c), times (1 + c)^degree: sum_k p_k (1 - c)^k (1 + c)^(degree - k).
+ex times_cosine_denominator(const ex& p, const ex& s, const ex& c, int degree) {
+  ex sum = 0;
+  for (int k = 0; k <= degree; ++k) {
+    const ex p_k = p.coeff(s, k);
+    if (!p_k.is_zero()) sum += p_k * GiNaC::pow(1 - c, k) * GiNaC::pow(1 + c, degree - k);
+  }
+  return sum.expand();
+}
+
+// A polynomial in s = tan^2(x^/2) and alpha (even in alpha, alpha^2 = tan^2(a^/2)) in the
+// cosines: p = polynomial / ((1 + Cx)^degree_s (1 + Ca)^degree_alpha_squared). Each
+// substitution is a Moebius map, so the polynomials of a fraction in lowest terms stay
+// coprime and no gcd is needed.
+struct AngleCosines {
+  ex polynomial;
+  int degree_s = 0, degree_alpha_squared = 0;
+};
+
+AngleCosines in_angle_cosines(const ex& p) {
+  static const GiNaC::symbol alpha_squared("alpha_squared");
+  const ex expanded = p.expand();
+  const ex alpha = sym::alpha(), s = sym::s();
+  ex in_square = 0;
+  for (int k = expanded.ldegree(alpha); k <= expanded.degree(alpha); ++k) {
+    const ex c = expanded.coeff(alpha, k);
+    if (c.is_zero()) continue;
+    if (k % 2 != 0) {
+      std::ostringstream os;
+      os << "angle form: odd power of alpha in " << p;
+      throw std::logic_error(os.str());
+    }
+    in_square += c * GiNaC::pow(alpha_squared, k / 2);
+  }
+  AngleCosines result;
+  result.degree_s = in_square.degree(s);
+  result.degree_alpha_squared = in_square.degree(alpha_squared);
+  const ex in_Cx = times_cosine_denominator(in_square, s, sym::Cx(), result.degree_s);
+  result.polynomial =
+      times_cosine_denominator(in_Cx, alpha_squared, sym::Ca(), result.degree_alpha_squared);
+  return result;
+}
+
 // A product coefficient * prod factor^exponent with every factor an irreducible
 // polynomial over Q that is positive on the domain (or an atom), keyed by its
 // canonical string: a deterministic factored form.
@@ -132,19 +175,26 @@ struct Product {
     if (!inserted) it->second.second += exponent;
   }
 
-  // Every factor of the rational function e.
-  void multiply_factored(const ex& e) {
-    const ex nd = e.normal().numer_denom();
-    for (int part = 0; part < 2; ++part) {
-      const int direction = part == 0 ? 1 : -1;
-      for (const auto& [f, power] : factor_list(nd.op(part))) {
-        if (GiNaC::is_a<numeric>(f)) {
-          coefficient *= GiNaC::ex_to<numeric>(GiNaC::pow(f, direction * power));
-        } else {
-          multiply(f, direction * power);
-        }
+  // Every factor of the polynomial p, to the power direction (1 or -1).
+  void multiply_polynomial(const ex& p, int direction) {
+    for (const auto& [f, power] : factor_list(p)) {
+      if (GiNaC::is_a<numeric>(f)) {
+        coefficient *= GiNaC::ex_to<numeric>(GiNaC::pow(f, direction * power));
+      } else {
+        multiply(f, direction * power);
       }
     }
+  }
+
+  // Every factor of a rational function of s and alpha, written in Cx and Ca.
+  void multiply_in_angles(const ex& v_form) {
+    const ex nd = v_form.numer_denom();
+    const AngleCosines numerator = in_angle_cosines(nd.op(0));
+    const AngleCosines denominator = in_angle_cosines(nd.op(1));
+    multiply_polynomial(numerator.polynomial, 1);
+    multiply_polynomial(denominator.polynomial, -1);
+    multiply(1 + sym::Cx(), denominator.degree_s - numerator.degree_s);
+    multiply(1 + sym::Ca(), denominator.degree_alpha_squared - numerator.degree_alpha_squared);
   }
 
   ex to_ex() const {
@@ -157,28 +207,18 @@ struct Product {
 }  // namespace
 
 RootTerm to_angle_atoms(const RootTerm& term, const GiNaC::exmap& sample) {
-  const ex s = sym::s(), alpha = sym::alpha();
-  const ex Cx = sym::Cx(), Ca = sym::Ca();
-  const GiNaC::lst to_angles{s == (1 - Cx) / (1 + Cx),
-                             alpha == GiNaC::sqrt((1 - Ca) / (1 + Ca))};
-  const ex rational = term.rational.subs(to_angles).normal();
-  const ex radicand = term.radicand.subs(to_angles).normal();
-  if (rational.has(alpha) || radicand.has(alpha) || rational.has(s) || radicand.has(s)) {
-    throw std::logic_error("angle form: substitution incomplete");
-  }
-
   Product root(sample);
-  root.multiply_factored(radicand);
+  root.multiply_in_angles(term.radicand);
   if (!root.coefficient.is_positive()) {
     std::ostringstream os;
-    os << "angle form: radicand " << radicand
+    os << "angle form: radicand " << term.radicand
        << " is not positive at the sample point (x^ = 0.4, a^ = 1.22 and the parameters' "
           "sample values)";
     throw std::logic_error(os.str());
   }
   // Pull squares out of the root: sqrt(f^(2q + r)) = f^q sqrt(f^r), f > 0.
   Product outside(sample), inside(sample);
-  outside.multiply_factored(rational);
+  outside.multiply_in_angles(term.rational);
   for (const auto& [key, factor] : root.factors) {
     const int q = factor.second / 2, r = factor.second % 2;
     outside.multiply(factor.first, q);

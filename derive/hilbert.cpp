@@ -34,45 +34,60 @@ ex polynomial_moment(const ex& polynomial, const GiNaC::symbol& t) {
   return sum;
 }
 
-// A polynomial in w = 1/kappa(t) with coefficients rational in t: the form in which
-// E1(t) = -w/t and all its t-derivatives live, since dw/dt = -alpha^2 w^3 / (2 t^2).
-using WPolynomial = std::vector<ex>;
-
-WPolynomial derivative(const WPolynomial& f, const GiNaC::symbol& t) {
-  const ex alpha = sym::alpha();
-  WPolynomial d(f.size() + 2, ex(0));
-  for (std::size_t j = 0; j < f.size(); ++j) {
-    if (f[j].is_zero()) continue;
-    d[j] += f[j].diff(t);
-    if (j > 0) d[j + 2] -= numeric(static_cast<long>(j)) * f[j] * GiNaC::pow(alpha, 2) /
-                          (2 * GiNaC::pow(t, 2));
+// The first `count` Taylor coefficients at t = tau of the rational function
+// numerator/denominator (polynomials in t): shifted coefficients, then series division.
+std::vector<ex> taylor_coefficients(const ex& numerator, const ex& denominator, const ex& tau,
+                                    int count, const GiNaC::symbol& t) {
+  auto shifted = [&](const ex& polynomial) {
+    // c_i of p(tau + h) = sum_i c_i h^i: c_i = sum_k p_k C(k, i) tau^(k - i).
+    std::vector<ex> c(count, ex(0));
+    const int degree = polynomial.degree(t);
+    for (int k = 0; k <= degree; ++k) {
+      const ex p_k = polynomial.coeff(t, k);
+      if (p_k.is_zero()) continue;
+      for (int i = 0; i < count && i <= k; ++i) {
+        c[i] += p_k * GiNaC::binomial(numeric(k), numeric(i)) * GiNaC::pow(tau, k - i);
+      }
+    }
+    return c;
+  };
+  const std::vector<ex> n = shifted(numerator), d = shifted(denominator);
+  const ex d0 = d[0].normal();
+  std::vector<ex> psi(count);
+  for (int i = 0; i < count; ++i) {
+    ex sum = n[i];
+    for (int j = 1; j <= i; ++j) sum -= d[j] * psi[i - j];
+    psi[i] = (sum / d0).normal();
   }
-  for (auto& c : d) c = c.normal();
-  return d;
+  return psi;
 }
 
 // Residue at t = tau of Psi(t)/(t - tau)^order * E1(t): the moment of the pole part.
-RadicalSum pole_moment(const ex& Psi, const ex& tau, int order, const GiNaC::symbol& t,
-                       Radicals& radicals) {
-  WPolynomial f{ex(0), (-Psi / t).normal()};
-  for (int k = 1; k < order; ++k) f = derivative(f, t);
-  const unsigned index = radicals.index_of(tau);
-  const ex square = radicals.square(index);
-  ex rational_part = 0, kappa_part = 0;
-  for (std::size_t j = 0; j < f.size(); ++j) {
-    if (f[j].is_zero()) continue;
-    const ex c = f[j].subs(t == tau);
-    // w^j = kappa^{-j}: kappa / square^{(j+1)/2} for odd j, 1/square^{j/2} for even j.
-    if (j % 2 == 1) {
-      kappa_part += c / GiNaC::pow(square, static_cast<long>((j + 1) / 2));
-    } else {
-      rational_part += c / GiNaC::pow(square, static_cast<long>(j / 2));
-    }
+// With q(t) = t^2 - alpha^2 t = (t kappa)^2, E1 = -1/(t kappa) = E1(tau) (q/q0)^(-1/2)
+// near tau, and f = (q(tau + h)/q0)^(-1/2) = sum_n P_n h^n / q0^n obeys q f' = -q' f/2:
+//   P_{n+1} = -[(q1 (2n + 1)/2) P_n + n q0 P_{n-1}] / (n + 1),  P_0 = 1,
+// q0 = q(tau) = tau^2 kappa^2, q1 = q'(tau) = 2 tau - alpha^2. The residue is
+//   E1(tau) sum_n psi_{order-1-n} P_n / q0^n,  psi_i the Taylor coefficients of Psi,
+// E1(tau) = -kappa/(tau kappa^2), one radical times a rational function: no derivatives
+// of E1, whose expressions swell with the order.
+RadicalSum pole_moment(const ex& Psi_numerator, const ex& Psi_denominator, const ex& tau,
+                       int order, const GiNaC::symbol& t, Radicals& radicals) {
+  const ex alpha_squared = GiNaC::pow(sym::alpha(), 2);
+  const ex q0 = (tau * (tau - alpha_squared)).expand(), q1 = (2 * tau - alpha_squared).expand();
+  const std::vector<ex> psi = taylor_coefficients(Psi_numerator, Psi_denominator, tau, order, t);
+  ex previous = 0, current = 1;  // P_{n-1}, P_n
+  ex sum = 0;                    // sum_n psi_{order-1-n} P_n q0^(order-1-n)
+  for (int n = 0; n < order; ++n) {
+    sum += psi[order - 1 - n] * current * GiNaC::pow(q0, order - 1 - n);
+    const ex next = (-(q1 * numeric(2 * n + 1, 2) * current + n * q0 * previous) /
+                     numeric(n + 1)).expand();
+    previous = current;
+    current = next;
   }
-  const ex scale = 1 / GiNaC::factorial(numeric(order - 1));
-  RadicalSum r = RadicalSum::rational(rational_part * scale);
-  r += RadicalSum::monomial(RadicalSum::Mask{1} << index, kappa_part * scale);
-  return r;
+  const unsigned index = radicals.index_of(tau);
+  // E1(tau) / q0^(order-1) = -kappa/(tau kappa^2 q0^(order-1)) = -kappa tau / q0^order.
+  return RadicalSum::monomial(RadicalSum::Mask{1} << index,
+                              (-tau * sum / GiNaC::pow(q0, order)).normal());
 }
 
 // M[Phi] for a rational Phi without radicals.
@@ -108,8 +123,8 @@ RadicalSum rational_moment(const ex& Phi, Radicals& radicals) {
     const ex a1 = base.coeff(t, 1), a0 = base.coeff(t, 0);
     const ex tau = (-a0 / a1).normal();
     const ex rest = GiNaC::quo(denominator, GiNaC::pow(base, order).expand(), t);
-    const ex Psi = (remainder / (GiNaC::pow(a1, order) * rest)).normal();
-    result += pole_moment(Psi, tau, order, t, radicals);
+    result += pole_moment(remainder, (GiNaC::pow(a1, order) * rest).expand(), tau, order, t,
+                          radicals);
   }
   return result.normalized();
 }

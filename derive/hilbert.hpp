@@ -7,7 +7,8 @@
 // in t leave a polynomial part, with moments alpha^{2k} C(2k,k)/4^k, and pole parts
 // 1/(t - tau)^l, whose moments are derivatives in tau of
 //   E1(tau) = M[1/(t - tau)] = -1/(tau kappa(tau)),  kappa(tau) = sqrt(1 - alpha^2/tau).
-// Each pole's contribution is the residue at t = tau of Phi(t) E1(t).
+// Each pole's contribution is the residue at t = tau of Phi(t) E1(t), taken from the
+// Taylor series of E1 at tau (a three-term recurrence, no symbolic derivatives).
 #pragma once
 
 #include <ginac/ginac.h>
