@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "block_keer.hpp"
+#include "expression_input.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -23,7 +24,7 @@ const std::set<std::string> reserved{"x", "v", "u", "s", "t", "alpha", "E", "b1"
                                      "Sa", "Cx", "Sx", "D", "Pi", "I", "Scalar"};
 
 [[noreturn]] void refuse(const ProfileSpec& spec, const std::string& why) {
-  throw std::invalid_argument("profile " + spec.name + " = \"" + spec.expression + "\": " + why);
+  throw InputRefused("profile " + spec.name + " = \"" + spec.expression + "\": " + why);
 }
 
 std::string str(const ex& e) {
@@ -52,6 +53,10 @@ void check_names(const ProfileSpec& spec) {
     refuse(spec, "the name must be a C++ identifier: a letter, then letters, digits or _ "
                  "(at most 64 characters)");
   }
+  if (spec.parameters.size() > expression_limits::max_parameters) {
+    refuse(spec, std::to_string(spec.parameters.size()) + " parameters, more than " +
+                     std::to_string(expression_limits::max_parameters));
+  }
   std::set<std::string> seen;
   for (const auto& p : spec.parameters) {
     if (!std::regex_match(p.name, identifier)) {
@@ -71,13 +76,12 @@ ex parse(const ProfileSpec& spec, const std::vector<GiNaC::realsymbol>& paramete
   table["x"] = sym::x();
   table["Pi"] = GiNaC::Pi;
   for (const auto& p : parameters) table[p.get_name()] = p;
-  GiNaC::parser reader(table, true);
   try {
-    return reader(spec.expression);
-  } catch (const std::exception& e) {
-    const std::string what = e.what();
-    refuse(spec, "cannot parse it (" + what.substr(0, what.find('\n')) +
-                     "); the symbols are x and the --param names");
+    const ex y = parse_bounded_expression(spec.expression, table);
+    checked_order(y, sym::x());
+    return y;
+  } catch (const InputRefused& e) {
+    refuse(spec, e.what());
   }
 }
 
@@ -87,16 +91,10 @@ ProfileParameter parse_parameter(const std::string& text) {
   const auto equals = text.find('=');
   ProfileParameter p{text.substr(0, equals), numeric(1, 2)};
   if (equals == std::string::npos) return p;
-  const std::string value = text.substr(equals + 1);
   try {
-    const ex parsed = GiNaC::parser{}(value);
-    if (!GiNaC::is_a<numeric>(parsed) || !GiNaC::ex_to<numeric>(parsed).is_real()) throw 0;
-    // Decimals parse as floats: keep their value as the nearest simple rational.
-    const numeric q = GiNaC::ex_to<numeric>(parsed);
-    p.sample = q.is_rational() ? q : numeric(std::llround(q.to_double() * 1e6), 1000000);
-  } catch (...) {
-    throw std::invalid_argument("--param " + text + ": the sample value \"" + value +
-                                "\" is not a real number (e.g. 0.25 or 1/4)");
+    p.sample = parse_bounded_number(text.substr(equals + 1));
+  } catch (const InputRefused& e) {
+    throw InputRefused("--param " + text + ": " + e.what());
   }
   return p;
 }

@@ -11,10 +11,11 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp"
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-fuzz -DWAVECONTACT_FUZZ=ON \
   -DWAVECONTACT_BUILD_TESTS=OFF -DWAVECONTACT_BUILD_BENCH=OFF -DWAVECONTACT_BUILD_PYTHON=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
-cmake --build build-fuzz -j"$(nproc)" --target cli_fuzzer derive_fuzzer
-for target in cli derive; do
+cmake --build build-fuzz -j"$(nproc)" --target cli_fuzzer derive_fuzzer expression_fuzzer
+for target in cli derive expression; do
   timeout=30  # a multi-zone contact takes seconds under the sanitizers
   [ "$target" = derive ] && timeout=60  # a valid n near 4096 takes ~1 s under the sanitizers
+  [ "$target" = expression ] && timeout=60  # derivations up to order 8, two parameters
   work="build-fuzz/work-$target"
   mkdir -p "$work"
   echo "fuzz: ${target}_fuzzer for ${seconds}s"
