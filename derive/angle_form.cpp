@@ -1,5 +1,6 @@
 #include "angle_form.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -102,12 +103,30 @@ std::vector<RootTerm> root_terms(const RadicalSum& closed, const Radicals& radic
 
 namespace {
 
-// p(s) with s = (1 - c)/(1 + c), times (1 + c)^degree: sum_k p_k (1 - c)^k (1 + c)^(degree - k).
+// p(s) with s = (1 - c)/(1 + c), times (1 + c)^degree: sum_k p_k (1 - c)^k (1 + c)^(degree - k),
+// collected by powers of c with the integer coefficients
+//   K(j, k) = [c^j] (1 - c)^k (1 + c)^(degree - k) = sum_i (-1)^i C(k, i) C(degree - k, j - i),
+// so that no product of polynomials is expanded.
 ex times_cosine_denominator(const ex& p, const ex& s, const ex& c, int degree) {
+  std::vector<ex> p_k(degree + 1);
+  for (int k = 0; k <= degree; ++k) p_k[k] = p.coeff(s, k);
+  std::vector<std::vector<numeric>> binomial(degree + 1);
+  for (int n = 0; n <= degree; ++n) {
+    for (int i = 0; i <= n; ++i) binomial[n].push_back(GiNaC::binomial(numeric(n), numeric(i)));
+  }
   ex sum = 0;
-  for (int k = 0; k <= degree; ++k) {
-    const ex p_k = p.coeff(s, k);
-    if (!p_k.is_zero()) sum += p_k * GiNaC::pow(1 - c, k) * GiNaC::pow(1 + c, degree - k);
+  for (int j = 0; j <= degree; ++j) {
+    ex coefficient = 0;
+    for (int k = 0; k <= degree; ++k) {
+      if (p_k[k].is_zero()) continue;
+      numeric K = 0;
+      for (int i = std::max(0, j - (degree - k)); i <= std::min(k, j); ++i) {
+        const numeric term = binomial[k][i] * binomial[degree - k][j - i];
+        K += i % 2 == 0 ? term : -term;
+      }
+      if (!K.is_zero()) coefficient += K * p_k[k];
+    }
+    sum += coefficient * GiNaC::pow(c, j);
   }
   return sum.expand();
 }

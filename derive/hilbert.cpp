@@ -90,17 +90,18 @@ RadicalSum pole_moment(const ex& Psi_numerator, const ex& Psi_denominator, const
                               (-tau * sum / GiNaC::pow(q0, order)).normal());
 }
 
-// M[Phi] for a rational Phi without radicals.
-RadicalSum rational_moment(const ex& Phi, Radicals& radicals) {
+// M[numerator/(denominator constant)] for polynomials numerator, denominator in t and a
+// t-free constant (no radicals): a quotient taken as it is, without a gcd.
+RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex& constant,
+                           Radicals& radicals) {
   const GiNaC::symbol& t = sym::t();
-  const ex nd = Phi.normal().numer_denom();
-  const ex numerator = nd.op(0).expand(), denominator = nd.op(1).expand();
   if (!numerator.is_polynomial(t) || !denominator.is_polynomial(t)) {
-    throw std::invalid_argument("weighted_moment: integrand is not rational in t: " + str(Phi));
+    throw std::invalid_argument("weighted_moment: integrand is not rational in t: " +
+                                str(numerator / denominator));
   }
   const ex polynomial_part = GiNaC::quo(numerator, denominator, t);
   const ex remainder = GiNaC::rem(numerator, denominator, t);
-  RadicalSum result = RadicalSum::rational(polynomial_moment(polynomial_part, t));
+  RadicalSum result = RadicalSum::rational(polynomial_moment(polynomial_part, t) / constant);
   if (remainder.is_zero() || denominator.degree(t) == 0) return result;
 
   const ex factored = GiNaC::factor(denominator);
@@ -124,9 +125,16 @@ RadicalSum rational_moment(const ex& Phi, Radicals& radicals) {
     const ex tau = (-a0 / a1).normal();
     const ex rest = GiNaC::quo(denominator, GiNaC::pow(base, order).expand(), t);
     result += pole_moment(remainder, (GiNaC::pow(a1, order) * rest).expand(), tau, order, t,
-                          radicals);
+                          radicals)
+                  .scaled(1 / constant);
   }
-  return result.normalized();
+  return result;
+}
+
+// M[Phi] for a rational Phi without radicals.
+RadicalSum rational_moment(const ex& Phi, Radicals& radicals) {
+  const ex nd = Phi.normal().numer_denom();
+  return fraction_moment(nd.op(0).expand(), nd.op(1).expand(), 1, radicals);
 }
 
 }  // namespace
@@ -166,10 +174,14 @@ RadicalSum bounded_inversion(const ex& g, Radicals& radicals) {
   if (!(g.subs(v == -v) + g).normal().is_zero()) {
     throw std::invalid_argument("bounded_inversion: g(v) is not odd: " + str(g));
   }
-  // Gamma(t) = v g(v) is even in v.
-  const ex Gamma = even_in_square(v * g, v, t);
-  const ex divided_difference = ((Gamma - Gamma.subs(t == s)) / (t - s)).normal();
-  return weighted_moment(RadicalSum::rational(divided_difference), radicals);
+  // Gamma(t) = v g(v) = N(t)/Q(t) is even in v. The divided difference is
+  // [N(t) Q(s) - N(s) Q(t)] / (t - s) over Q(t) Q(s): the division by t - s is exact, and
+  // Q(s) is a constant of the moment in t.
+  const ex Gamma = even_in_square(v * g, v, t).numer_denom();
+  const ex N = Gamma.op(0).expand(), Q = Gamma.op(1).expand();
+  const ex Q_s = Q.subs(t == s);
+  const ex numerator = GiNaC::quo((N * Q_s - N.subs(t == s) * Q).expand(), t - s, t);
+  return fraction_moment(numerator, Q, Q_s, radicals).normalized();
 }
 
 RadicalSum load_integral(const RadicalSum& I, Radicals& radicals) {
