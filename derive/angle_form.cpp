@@ -140,6 +140,8 @@ struct AngleCosines {
   int degree_s = 0, degree_alpha_squared = 0;
 };
 
+// (Not hilbert.hpp's even_in_square: p is already a polynomial, and its normal() of the whole
+// polynomial made an order-32 derivation 40 % slower.)
 AngleCosines in_angle_cosines(const ex& p) {
   static const GiNaC::symbol alpha_squared("alpha_squared");
   const ex expanded = p.expand();
