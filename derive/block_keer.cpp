@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "symbols.hpp"
 
@@ -53,6 +54,38 @@ struct HalfAngleSubstitution : GiNaC::map_function {
   }
 };
 
+// cos(k x^) -> T_k(c), sin(k x^) -> sin(x^) U_(k-1)(c), with sin x^ a symbol.
+struct CosineSubstitution : GiNaC::map_function {
+  CosineSubstitution(const ex& original, ex c, ex sine)
+      : original(original), c(std::move(c)), sine(std::move(sine)) {}
+  const ex& original;
+  const ex c, sine;
+  // T_k (first) or U_k (second kind) by the three-term recurrence.
+  ex chebyshev(long k, bool second) const {
+    ex previous = 1, current = second ? 2 * c : c;
+    if (k == 0) return previous;
+    for (long i = 1; i < k; ++i) {
+      const ex next = (2 * c * current - previous).expand();
+      previous = current;
+      current = next;
+    }
+    return current;
+  }
+  ex operator()(const ex& e) override {
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+      const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+      const long k = multiple_of_x(e.op(0), original);
+      if (name == "cos") return chebyshev(std::labs(k), false);
+      if (name == "sin") return k == 0 ? ex(0) : (k < 0 ? -1 : 1) * sine * chebyshev(std::labs(k) - 1, true);
+      std::ostringstream os;
+      os << "profile contains " << e << ", which is not rational in cos(k x) and sin(k x): "
+         << original;
+      throw std::invalid_argument(os.str());
+    }
+    return e.map(*this);
+  }
+};
+
 }  // namespace
 
 ex cos_multiple(long k, const ex& v) {
@@ -81,14 +114,39 @@ ex in_half_angle_tangent(const ex& y) {
   return result;
 }
 
-long highest_harmonic(const ex& y) {
-  long highest = 0;
-  if (GiNaC::is_a<GiNaC::function>(y)) {
-    const std::string name = GiNaC::ex_to<GiNaC::function>(y).get_name();
-    if (name == "cos" || name == "sin") highest = std::labs(multiple_of_x(y.op(0), y));
+ex in_cosine(const ex& y) {
+  const GiNaC::symbol sine("sine");
+  const ex& c = sym::Cx();
+  CosineSubstitution substitute(y, c, sine);
+  const ex nd = substitute(y).normal().numer_denom();
+  // A polynomial in sine as P0 + sine P1, with sine^2 = 1 - c^2.
+  auto parts = [&](const ex& polynomial) {
+    const ex p = polynomial.expand();
+    ex even = 0, odd = 0;
+    for (int i = 0; i <= p.degree(sine); ++i) {
+      const ex term = p.coeff(sine, i) * GiNaC::pow(1 - c * c, i / 2);
+      (i % 2 == 0 ? even : odd) += term;
+    }
+    return std::make_pair(even.expand(), odd.expand());
+  };
+  const auto [N0, N1] = parts(nd.op(0));
+  const auto [D0, D1] = parts(nd.op(1));
+  // (N0 + sine N1)/(D0 + sine D1) times (D0 - sine D1) over itself.
+  const ex numerator = (N0 * D0 - (1 - c * c) * N1 * D1).expand();
+  const ex odd = (N1 * D0 - N0 * D1).expand();
+  const ex denominator = (D0 * D0 - (1 - c * c) * D1 * D1).expand();
+  if (!odd.is_zero()) {
+    std::ostringstream os;
+    os << "profile is not even in x (y(-x) != y(x)): " << y;
+    throw std::invalid_argument(os.str());
   }
-  for (const ex& operand : y) highest = std::max(highest, highest_harmonic(operand));
-  return highest;
+  if (!numerator.is_polynomial(c) || !denominator.is_polynomial(c)) {
+    std::ostringstream os;
+    os << "profile is not a rational function of cos(k x), sin(k x): " << y;
+    throw std::invalid_argument(os.str());
+  }
+  const ex Y = (numerator / denominator).normal().numer_denom();
+  return GiNaC::collect_common_factors(Y.op(0)) / GiNaC::collect_common_factors(Y.op(1));
 }
 
 ex hilbert_rhs(const ex& y) {

@@ -20,8 +20,10 @@ GiNaC::ex exp_i(const GiNaC::ex& v);
 // Throws std::invalid_argument naming the offending subexpression otherwise.
 GiNaC::ex in_half_angle_tangent(const GiNaC::ex& y);
 
-// The highest k of the cos(k x^), sin(k x^) in the profile y (0 if none).
-long highest_harmonic(const GiNaC::ex& y);
+// The even profile y(x^) as a rational function Y(c) of c = cos x^ (sym::Cx()), in lowest
+// terms: cos(k x^) = T_k(c), sin(k x^) = sin x^ U_(k-1)(c), sin^2 x^ = 1 - c^2.
+// Throws std::invalid_argument if y is not even or not rational in cos(k x^), sin(k x^).
+GiNaC::ex in_cosine(const GiNaC::ex& y);
 
 // Right-hand side of eq. 5: g(v) = -(E*/2) y'(x^(v)), in lowest terms.
 GiNaC::ex hilbert_rhs(const GiNaC::ex& y);

@@ -1,5 +1,7 @@
 #include "closed_forms.hpp"
 
+#include <algorithm>
+
 #include "block_keer.hpp"
 #include "hilbert.hpp"
 #include "symbols.hpp"
@@ -32,9 +34,23 @@ RootTerm slope_factor(const RootTerm& term) {
 }  // namespace
 
 ClosedForms derive_closed_forms(const ex& y, const GiNaC::exmap& sample) {
+  return derive_closed_forms(y, split_harmonic_part(in_cosine(y)), sample);
+}
+
+ClosedForms derive_closed_forms(const ex& y, const HarmonicSplit& parts,
+                                const GiNaC::exmap& sample) {
   ClosedForms d;
   d.profile = y;
-  d.g = hilbert_rhs(y);
+  const GiNaC::realsymbol& c = sym::Cx();
+  d.height = in_cosine(y);
+  d.height_slope = d.height.diff(c).normal();
+  const ex nd = d.height.numer_denom();
+  d.harmonic = std::max(nd.op(0).degree(c), nd.op(1).degree(c));
+  d.cosine = parts.cosine;
+  d.rational_height = parts.rational;
+  d.rational_height_slope = parts.rational.diff(c).normal();
+  // The rest R through the engine: eq. 11 by de Moivre, eq. 12, eq. 6.
+  d.g = hilbert_rhs(parts.rational.subs(c == GiNaC::cos(sym::x())));
   d.inversion = bounded_inversion(d.g, d.radicals);
   d.load = load_integral(d.inversion, d.radicals);
   // Physical pressure p(x) = (pi/b1) p^(x^), p^ = sqrt(alpha^2 - u^2) * inversion.
@@ -44,11 +60,6 @@ ClosedForms derive_closed_forms(const ex& y, const GiNaC::exmap& sample) {
   d.pressure_angle = in_angles(d.pressure_v, sample);
   d.load_angle = in_angles(d.load_v, sample);
   for (const auto& term : d.load_angle) d.load_slope_factor.push_back(slope_factor(term));
-  // y is even in x^, so rational in v^2 = tan^2(x^/2) = (1 - s)/(1 + s).
-  const GiNaC::realsymbol& s = sym::Cx();
-  d.height = in_half_angle_tangent(y).subs(sym::v() == GiNaC::sqrt((1 - s) / (1 + s))).normal();
-  d.height_slope = d.height.diff(s).normal();
-  d.harmonic = highest_harmonic(y);
   return d;
 }
 

@@ -8,14 +8,19 @@
 #include <ginac/ginac.h>
 
 #include "angle_form.hpp"
+#include "harmonic_part.hpp"
 #include "radicals.hpp"
 
 namespace wavecontact::derive {
 
+// y = sum_k cosine[k] cos(k x^) + R(cos x^) (harmonic_part.hpp): the cosine sum has the
+// Legendre-Dirichlet form; g, the inversion, the load and their forms below are those of
+// R, the part whose poles lie off v^2 = -1 (the whole profile when cosine is empty).
 struct ClosedForms {
   Radicals radicals;
   GiNaC::ex profile;     // y(x^), even in sym::x(), rational in cos(k x^), sin(k x^)
-  GiNaC::ex g;           // eq. 11: g(v) = -(E*/2) y'(x^(v))
+  std::vector<GiNaC::ex> cosine;  // A_0..A_K, or empty
+  GiNaC::ex g;           // eq. 11: g(v) = -(E*/2) R'(x^(v))
   RadicalSum inversion;  // eq. 12 solved: p^(u) = sqrt(alpha^2 - u^2) * inversion(s)
   RadicalSum load;       // eq. 6: P(alpha)
   // In physical units, p(x) = (pi/b1) p^(x^); v-form and angle form.
@@ -26,7 +31,8 @@ struct ClosedForms {
   // The profile in s = cos x^ (sym::Cx()), y(x^) = Y(cos x^), and dY/ds: the surface as the
   // multi-zone contact solver of the runtime sees it (runtime/src/interval_inversion.hpp).
   GiNaC::ex height, height_slope;
-  long harmonic = 1;  // the highest k of cos(k x^), sin(k x^) in the profile
+  GiNaC::ex rational_height, rational_height_slope;  // R(Cx) and dR/dCx
+  long harmonic = 1;  // the degree of Y in cos x^: the highest k of its harmonics
 };
 
 // Every term of a closed form in angle atoms (signs fixed at `sample`).
@@ -36,8 +42,13 @@ std::vector<RootTerm> in_angles(const std::vector<RootTerm>& v_form,
 // Every term's rational part multiplied by factor.
 std::vector<RootTerm> scaled(std::vector<RootTerm> terms, const GiNaC::ex& factor);
 
-// Derives every closed form of the profile y (a GiNaC expression in sym::x()).
-// Throws std::invalid_argument if y is not rational in cos(k x^), sin(k x^) or not even.
+// Derives every closed form of the profile y (a GiNaC expression in sym::x()), split by
+// split_harmonic_part. Throws std::invalid_argument if y is not rational in cos(k x^),
+// sin(k x^) or not even.
 ClosedForms derive_closed_forms(const GiNaC::ex& y, const GiNaC::exmap& sample = sample_point_v());
+// The same with the parts given: {{}, in_cosine(y)} sends the whole profile through the
+// partial fractions of the engine (the proofs of the Legendre-Dirichlet form compare both).
+ClosedForms derive_closed_forms(const GiNaC::ex& y, const HarmonicSplit& parts,
+                                const GiNaC::exmap& sample = sample_point_v());
 
 }  // namespace wavecontact::derive

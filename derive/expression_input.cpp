@@ -320,15 +320,19 @@ numeric parse_bounded_number(const std::string& text) {
   return GiNaC::ex_to<numeric>(value);
 }
 
-long checked_order(const ex& y, const ex& x) {
+ProfileOrder checked_order(const ex& y, const ex& x) {
   const Degrees d = degrees(y, x);
-  const long order = std::max(d.numerator, d.denominator);
-  if (order > limits::max_order) {
-    refuse("its order (the degree in cos x, sin x of the numerator or the denominator, "
-           "cos(k x) counting k) may reach " + std::to_string(order) + ", beyond " +
-           std::to_string(limits::max_order));
+  if (d.numerator > limits::max_order) {
+    refuse("its order (the degree in cos x, sin x of the numerator, cos(k x) counting k) may "
+           "reach " + std::to_string(d.numerator) + ", beyond " + std::to_string(limits::max_order));
   }
-  return order;
+  if (d.denominator > limits::max_denominator_order) {
+    refuse("the order of its denominator (the degree in cos x, sin x, cos(k x) counting k) may "
+           "reach " + std::to_string(d.denominator) + ", beyond " +
+           std::to_string(limits::max_denominator_order) +
+           ": what is not a cosine sum goes through partial fractions");
+  }
+  return {d.numerator, d.denominator};
 }
 
 }  // namespace wavecontact::derive

@@ -23,11 +23,18 @@ inline constexpr std::size_t max_characters = 2000;  // of the expression
 inline constexpr int max_nesting = 16;               // of parentheses
 inline constexpr int max_digits = 20;                // significant digits of a number literal
 inline constexpr int max_decimal_exponent = 20;      // |e| of 1.5e-3
-inline constexpr int max_power = 32;                 // |n| of ^n, an integer literal
-// The profile's order: an upper bound on the degree in (cos x, sin x) of the numerator
-// and of the denominator once y is one fraction (cos(k x) counts k). The engine's cost
-// grows steeply with it (README, derivation times).
-inline constexpr long max_order = 32;
+inline constexpr int max_power = 256;                // |n| of ^n, an integer literal
+// The profile's order: upper bounds on the degrees in (cos x, sin x) of the numerator and
+// of the denominator once y is one fraction (cos(k x) counts k). A profile's cosine sum
+// costs little whatever its order (derive/harmonic_part.hpp); the rest goes through the
+// engine's partial fractions, whose cost grows steeply with the order of the denominator
+// (README, derivation times).
+inline constexpr long max_order = 256;              // of the numerator; |k| of cos(k x)
+inline constexpr long max_denominator_order = 32;   // of the denominator
+// Of a profile kept whole (its denominator's leading coefficient in cos x depends on a
+// parameter, so it has no separate cosine sum): numerator and denominator. Its pole at
+// v^2 = -1 then carries the parameters, and order 16 takes seconds (README).
+inline constexpr long max_whole_order = 16;
 inline constexpr std::size_t max_parameters = 8;
 inline constexpr long max_number_bits = 256;  // numerator and denominator of a coefficient
 }  // namespace expression_limits
@@ -43,9 +50,13 @@ GiNaC::ex parse_bounded_expression(const std::string& text, const GiNaC::symtab&
 // A --param sample value: a real number (decimal, p/q, or an arithmetic of literals).
 GiNaC::numeric parse_bounded_number(const std::string& text);
 
-// The order of y (see max_order), and the check of every trigonometric argument (an
-// integer multiple k x, |k| <= max_order) and of every coefficient (max_number_bits).
-// Refuses what is beyond the limits, naming the subexpression.
-long checked_order(const GiNaC::ex& y, const GiNaC::ex& x);
+// Upper bounds on the degrees in (cos x, sin x) of y's numerator and denominator once y is
+// one fraction (cos(k x) counting k), checked against max_order and max_denominator_order,
+// with every trigonometric argument (an integer multiple k x, |k| <= max_order) and every
+// coefficient (max_number_bits). Refuses what is beyond the limits, naming the subexpression.
+struct ProfileOrder {
+  long numerator = 0, denominator = 0;
+};
+ProfileOrder checked_order(const GiNaC::ex& y, const GiNaC::ex& x);
 
 }  // namespace wavecontact::derive

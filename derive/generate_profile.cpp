@@ -1,5 +1,6 @@
 // The files of a user profile: profile_<name>.hpp (evaluators and the runtime adapter)
 // and profile_<name>_manifest.txt (every derived expression, for regression tests).
+#include <regex>
 #include <sstream>
 
 #include "canonical.hpp"
@@ -38,25 +39,128 @@ std::string parameter_array(const ProfileDerivation& d) {
   return list;
 }
 
+// The names of arguments, comma-separated.
+std::string names(const std::vector<ex>& arguments) {
+  std::string list;
+  for (const ex& a : arguments) {
+    list += (list.empty() ? "" : ", ") + GiNaC::ex_to<GiNaC::symbol>(a).get_name();
+  }
+  return list;
+}
+
+// An evaluator of a profile with a harmonic part: the cosine sum's coefficients from
+// <name>_cosine_coefficients, summed by runtime/include/wavecontact/harmonic_series.hpp, plus
+// <name>_rational_<quantity>, the closed form of the rest, when `rest`. `series` is the call
+// of the sum; `work` gives it K scratch values.
+std::string harmonic_wrapper(const std::string& quantity, const std::string& doc,
+                             const std::vector<ex>& arguments, const ProfileDerivation& d,
+                             const std::string& series, bool rest, bool work) {
+  const std::string& name = d.spec.name;
+  const int K = static_cast<int>(d.forms.cosine.size()) - 1;
+  std::vector<ex> parameters(d.parameters.begin(), d.parameters.end());
+  std::string body = "  Scalar A[" + std::to_string(K + 1) + "];\n";
+  if (work) body += "  Scalar work[" + std::to_string(K) + "];\n";
+  body += "  " + name + "_cosine_coefficients<Scalar>(" + names(parameters) +
+          (parameters.empty() ? "" : ", ") + "A);\n  return wavecontact::" + series;
+  if (rest) body += " +\n         " + name + "_rational_" + quantity + "<Scalar>(" + names(arguments) + ")";
+  body += ";\n";
+  std::ostringstream os;
+  std::istringstream lines(doc);
+  for (std::string line; std::getline(lines, line);) os << "// " << line << "\n";
+  os << "template <typename Scalar>\ninline Scalar " << name << "_" << quantity << "(";
+  for (std::size_t i = 0; i < arguments.size(); ++i) {
+    const std::string argument = GiNaC::ex_to<GiNaC::symbol>(arguments[i]).get_name();
+    const bool used = std::regex_search(body, std::regex("\\b" + argument + "\\b"));
+    os << (i ? ", " : "") << "const Scalar& " << (used ? argument : "/*" + argument + "*/");
+  }
+  os << ") {\n" << body << "}\n";
+  return os.str();
+}
+
+// The arguments of the evaluators of a pressure, of a load and of the profile's height.
+struct EvaluatorArguments {
+  std::vector<ex> pressure, load, height;
+};
+
+EvaluatorArguments evaluator_arguments(const ProfileDerivation& d) {
+  return {with_parameters({sym::E(), sym::b1()}, d, {sym::Ca(), sym::Sa(), sym::Cx(), sym::Sx(), sym::D()}),
+          with_parameters({sym::E()}, d, {sym::Ca(), sym::Sa()}), with_parameters({}, d, {sym::Cx()})};
+}
+
+// The five evaluators of a profile with a cosine sum, each the sum plus R's closed form.
+std::string harmonic_evaluators(const ProfileDerivation& d, bool rational) {
+  const std::string K = std::to_string(d.forms.cosine.size() - 1);
+  const EvaluatorArguments arguments = evaluator_arguments(d);
+  const std::string plus_rest = rational ? ", plus the closed form of R" : "";
+  const std::string linear = "\nCost: O(K) operations, K = " + K + ".";
+  std::ostringstream os;
+  os << "\n"
+     << harmonic_wrapper("pressure",
+                         "Contact pressure p(x), |x| < a: eq. 12 solved exactly, the cosine sum in the "
+                         "Legendre-Dirichlet form" + plus_rest + "." + linear,
+                         arguments.pressure, d,
+                         "harmonic_series_pressure<Scalar>(A, " + K + ", work, E, b1, Ca, Cx, Sx, D)",
+                         rational, true)
+     << "\n"
+     << harmonic_wrapper("load", "Load per unit length P (eq. 6)" + plus_rest + "." + linear,
+                         arguments.load, d,
+                         "harmonic_series_load<Scalar>(A, " + K + ", work, E, Ca, Sa)", rational, true)
+     << "\n"
+     << harmonic_wrapper("load_slope_factor",
+                         "dP/dSa - dP/dCa, so that dP/da = (pi/b1) sin(a^) times this" + plus_rest +
+                             "." + linear,
+                         arguments.load, d,
+                         "harmonic_series_load_slope_factor<Scalar>(A, " + K + ", work, E, Ca)",
+                         rational, true)
+     << "\n"
+     << harmonic_wrapper("height",
+                         "The profile in Cx = cos x^: y(x^) = Y(Cx)" + plus_rest + "." + linear,
+                         arguments.height, d,
+                         "harmonic_series_height<Scalar>(A, " + K + ", Cx)", rational, false)
+     << "\n"
+     << harmonic_wrapper("height_slope",
+                         "dY/dCx: the right-hand side of the multi-zone contact solver" + plus_rest +
+                             "." + linear,
+                         arguments.height, d,
+                         "harmonic_series_height_slope<Scalar>(A, " + K + ", Cx)", rational, false);
+  return os.str();
+}
+
 std::string header(const ProfileDerivation& d, const std::string& command) {
   const std::string& name = d.spec.name;
-  const std::vector<ex> zone{sym::Ca(), sym::Sa()};
-  const std::vector<ex> point{sym::Ca(), sym::Sa(), sym::Cx(), sym::Sx(), sym::D()};
-  std::vector<EmittedFunction> functions{
-      {name + "_pressure",
-       "Contact pressure p(x), |x| < a: eq. 12 solved exactly for this profile.",
-       with_parameters({sym::E(), sym::b1()}, d, point), single_term(d.forms.pressure_angle)},
-      {name + "_load", "Load per unit length P (eq. 6).", with_parameters({sym::E()}, d, zone),
-       single_term(d.forms.load_angle)},
-      {name + "_load_slope_factor",
-       "dP/dSa - dP/dCa, so that dP/da = (pi/b1) sin(a^) times this.",
-       with_parameters({sym::E()}, d, zone), single_term(d.forms.load_slope_factor)},
-  };
-  functions.push_back({name + "_height", "The profile in Cx = cos x^: y(x^) = Y(Cx).",
-                       with_parameters({}, d, {sym::Cx()}), d.forms.height});
-  functions.push_back({name + "_height_slope",
-                       "dY/dCx: the right-hand side of the multi-zone contact solver.",
-                       with_parameters({}, d, {sym::Cx()}), d.forms.height_slope});
+  const ClosedForms& forms = d.forms;
+  const bool harmonic = !forms.cosine.empty();
+  const bool rational = !harmonic || !forms.rational_height_slope.is_zero();
+  const int K = static_cast<int>(forms.cosine.size()) - 1;
+  const std::string rest = harmonic ? name + "_rational" : name;
+  const std::string of_rest = harmonic ? " of the part R that is not a cosine sum" : "";
+  const EvaluatorArguments arguments = evaluator_arguments(d);
+  std::vector<EmittedFunction> functions;
+  if (rational) {
+    functions.push_back({rest + "_pressure",
+                         "Contact pressure p(x)" + of_rest +
+                             ", |x| < a: eq. 12 solved exactly for this profile.",
+                         arguments.pressure, single_term(forms.pressure_angle)});
+    functions.push_back({rest + "_load", "Load per unit length P (eq. 6)" + of_rest + ".",
+                         arguments.load, single_term(forms.load_angle)});
+    functions.push_back({rest + "_load_slope_factor",
+                         "dP/dSa - dP/dCa" + of_rest +
+                             ", so that dP/da = (pi/b1) sin(a^) times this.",
+                         arguments.load, single_term(forms.load_slope_factor)});
+    functions.push_back({rest + "_height", "The profile" + of_rest + " in Cx = cos x^: y(x^) = Y(Cx).",
+                         arguments.height, forms.rational_height});
+    functions.push_back({rest + "_height_slope",
+                         "dY/dCx" + of_rest + ": the right-hand side of the multi-zone contact solver.",
+                         arguments.height, forms.rational_height_slope});
+  }
+  if (harmonic) {
+    EmittedFunction cosine{name + "_cosine_coefficients",
+                           "The cosine sum of the profile, y = sum_k A_k cos(k x^) + R(cos x^): out[k] = A_k, "
+                           "k = 0.." + std::to_string(K) + ".",
+                           with_parameters({}, d, {}), 0};
+    cosine.outputs = forms.cosine;
+    functions.push_back(cosine);
+  }
   for (std::size_t i = 0; i < d.pole_squares.size(); ++i) {
     functions.push_back({name + "_pole_square_" + std::to_string(i),
                          "A pole v^2 = tan^2(x^/2) of g; where real and > 0 the contact "
@@ -72,14 +176,24 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
     for (const auto& p : d.spec.parameters) os << " " << p.name;
   }
   os << ".\n// Derived by the Block-Keer change of variables and the bounded inversion (seed "
-        "eqs. 4-6, 11, 12):\n//   g(v) = "
-     << canonical_rational(d.forms.g)
-     << "\n// Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register "
+        "eqs. 4-6, 11, 12)";
+  if (harmonic) {
+    os << ".\n// Its cosine sum, y = sum_{k<=" << K << "} A_k cos(k x^) + R(cos x^), has the "
+          "Legendre-Dirichlet form\n// (derive/harmonic_part.hpp), summed by wavecontact/"
+          "harmonic_series.hpp; "
+       << (rational ? "R(Cx) = " + canonical_rational(forms.rational_height) + " has"
+                    : "it is the whole profile.\n");
+  }
+  if (rational) os << (harmonic ? "" : ":") << "\n//   g(v) = " << canonical_rational(d.forms.g) << "\n";
+  os << "// Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register "
         "with the runtime:\n//   wavecontact::register_profile(wavecontact::generated::"
      << name << "_profile_evaluator());\n"
-     << "#pragma once\n\n#include <cmath>\n\n#include \"wavecontact/profile.hpp\"\n\n"
+     << "#pragma once\n\n#include <cmath>\n\n"
+     << (harmonic ? "#include \"wavecontact/harmonic_series.hpp\"\n" : "")
+     << "#include \"wavecontact/profile.hpp\"\n\n"
         "namespace wavecontact::generated {\n";
   for (const auto& f : functions) os << "\n" << emit_function(f);
+  if (harmonic) os << harmonic_evaluators(d, rational);
 
   const std::string q = parameter_array(d);
   os << "\n// The evaluators above behind the runtime's uniform interface.\n"
@@ -124,6 +238,13 @@ std::string manifest(const ProfileDerivation& d, const std::string& command) {
   os << "profile.expression = " << d.spec.expression << "\n";
   for (const auto& p : d.spec.parameters) os << "parameter." << p.name << ".sample = " << p.sample << "\n";
   os << "profile.y = " << canonical_string(d.forms.profile) << "\n";
+  for (std::size_t k = 0; k < d.forms.cosine.size(); ++k) {
+    if (d.forms.cosine[k].is_zero()) continue;
+    os << "profile.cosine[" << k << "] = " << canonical_rational(d.forms.cosine[k]) << "\n";
+  }
+  if (!d.forms.cosine.empty()) {
+    os << "profile.rational = " << canonical_rational(d.forms.rational_height) << "\n";
+  }
   os << "profile.g = " << canonical_rational(d.forms.g) << "\n";
   const Radicals& radicals = d.forms.radicals;
   for (unsigned i = 0; i < radicals.size(); ++i) {

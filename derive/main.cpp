@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
       "cos(k x) and sin(k x) (GiNaC syntax, e.g. \"H1*cos(x)+H3*cos(3*x)\"): writes "
       "profile_<NAME>.hpp and profile_<NAME>_manifest.txt. Bounded: at most 2000 "
       "characters, parentheses 16 deep, numbers of 20 digits, exponents integer literals "
-      "|n| <= 32, order (cos(k x) counts k) <= 32, 8 parameters; beyond, refused (exit 2)");
+      "|n| <= 256, order (cos(k x) counts k) <= 256 in the numerator and <= 32 in the "
+      "denominator, 8 parameters; beyond, refused (exit 2)");
   auto* profile_name =
       app.add_option("--name", name, "the profile's name, a C++ identifier (with --profile)");
   auto* parameter = app.add_option(

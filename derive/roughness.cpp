@@ -6,6 +6,7 @@
 #include <cln/integer.h>
 
 #include "block_keer.hpp"
+#include "harmonic_part.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -96,38 +97,25 @@ double product_form_deviation(int n, int digits) {
 
 ex roughness_profile(int n) { return sym::H2() * GiNaC::cos(n * sym::x()); }
 
-ex legendre_polynomial(int k, const ex& y) {
-  ex previous = 1, current = y;
-  if (k == 0) return previous;
-  for (int i = 1; i < k; ++i) {
-    const ex next = ((2 * i + 1) * y * current - i * previous) / (i + 1);
-    previous = current;
-    current = next.expand();
-  }
-  return current;
+namespace {
+
+// H2 cos(n x^): the cosine sum with A_n = H2 alone.
+std::vector<ex> roughness_cosine(int n) {
+  std::vector<ex> cosine(n + 1, ex(0));
+  cosine[n] = sym::H2();
+  return cosine;
 }
+
+}  // namespace
 
 ex legendre_dirichlet_pressure(int n) {
   require_even(n, "legendre_dirichlet_pressure");
-  const ex Ca = sym::Ca(), Cx = sym::Cx();
-  ex sum = 0, v_previous = 1, v_current = 1;  // V_0 = 1, V_1 = 2x - 1
-  for (int j = 0; j < n; ++j) {
-    if (j == 1) v_current = 2 * Cx - 1;
-    if (j >= 2) {
-      const ex next = (2 * Cx * v_current - v_previous).expand();
-      v_previous = v_current;
-      v_current = next;
-    }
-    sum += legendre_polynomial(n - 1 - j, Ca) * v_current;
-  }
-  return sym::E() * sym::H2() * n / 2 * GiNaC::sqrt(sym::D() * (1 + Cx)) * sum.expand();
+  return harmonic_pressure(roughness_cosine(n));
 }
 
 ex legendre_dirichlet_load(int n) {
   require_even(n, "legendre_dirichlet_load");
-  const ex Ca = sym::Ca();
-  return GiNaC::Pi / 2 * sym::E() * sym::H2() * n *
-         (legendre_polynomial(n - 1, Ca) - legendre_polynomial(n, Ca)).expand();
+  return harmonic_load(roughness_cosine(n));
 }
 
 namespace {

@@ -76,9 +76,6 @@ EmittedFunction roughness_legendre_program(int n);
 // that limit on the emitted per-n evaluators.
 EmittedFunction roughness_full_contact_program();
 
-// Legendre polynomial P_k(y), by the three-term recurrence.
-GiNaC::ex legendre_polynomial(int k, const GiNaC::ex& y);
-
 // The paper's eq. 19 for one term v/(v^2+1)^j: sqrt(alpha^2 - u^2)/((alpha^2+1)^(j/2) (u^2+1)^j),
 // returned as I(s) with p = sqrt(alpha^2 - u^2) I (a RadicalSum over kappa(-1)).
 RadicalSum eq19_term(int j, Radicals& radicals);

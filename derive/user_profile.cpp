@@ -1,5 +1,6 @@
 #include "user_profile.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <set>
@@ -71,6 +72,20 @@ void check_names(const ProfileSpec& spec) {
   }
 }
 
+// A profile without a separate cosine sum goes whole through the partial fractions.
+void check_whole_order(const ProfileSpec& spec, const ex& Y) {
+  const GiNaC::symbol& c = sym::Cx();
+  const ex nd = Y.numer_denom();
+  const long order = std::max(nd.op(0).degree(c), nd.op(1).degree(c));
+  if (order > expression_limits::max_whole_order) {
+    refuse(spec, "its order in cos x is " + std::to_string(order) + ", beyond " +
+                     std::to_string(expression_limits::max_whole_order) +
+                     " for a profile whose denominator's leading coefficient in cos x depends "
+                     "on a parameter (it has no separate cosine sum and goes whole through "
+                     "partial fractions)");
+  }
+}
+
 ex parse(const ProfileSpec& spec, const std::vector<GiNaC::realsymbol>& parameters) {
   GiNaC::symtab table;
   table["x"] = sym::x();
@@ -126,7 +141,11 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
                  "on x = 0, a top of the profile");
   }
   try {
-    d.forms = derive_closed_forms(y, d.sample);
+    const HarmonicSplit parts = split_harmonic_part(in_cosine(y));
+    if (parts.cosine.empty()) check_whole_order(spec, parts.rational);
+    d.forms = derive_closed_forms(y, parts, d.sample);
+  } catch (const InputRefused&) {
+    throw;
   } catch (const std::invalid_argument& e) {
     refuse(spec, e.what());
   } catch (const std::logic_error& e) {

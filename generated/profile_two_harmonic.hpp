@@ -3,59 +3,77 @@
 //
 // Profile two_harmonic: y(x^) = H1*cos(x)+H3*cos(3*x) over the period 2 pi of x^ = pi x/b1,
 // parameters: H1 H3.
-// Derived by the Block-Keer change of variables and the bounded inversion (seed eqs. 4-6, 11, 12):
-//   g(v) = ((v^5)*E*H1-30*(v^3)*E*H3+2*(v^3)*E*H1+9*(v^5)*E*H3+9*E*H3*v+E*H1*v)/(1+3*(v^2)+3*(v^4)+v^6)
+// Derived by the Block-Keer change of variables and the bounded inversion (seed eqs. 4-6, 11, 12).
+// Its cosine sum, y = sum_{k<=3} A_k cos(k x^) + R(cos x^), has the Legendre-Dirichlet form
+// (derive/harmonic_part.hpp), summed by wavecontact/harmonic_series.hpp; it is the whole profile.
 // Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_profile(wavecontact::generated::two_harmonic_profile_evaluator());
 #pragma once
 
 #include <cmath>
 
+#include "wavecontact/harmonic_series.hpp"
 #include "wavecontact/profile.hpp"
 
 namespace wavecontact::generated {
 
-// Contact pressure p(x), |x| < a: eq. 12 solved exactly for this profile.
-// Total ops: 25 (7 add, 15 mul, 2 div, 1 sqrt, 0 neg), 2 temporaries
+// The cosine sum of the profile, y = sum_k A_k cos(k x^) + R(cos x^): out[k] = A_k, k = 0..3.
+// Total ops: 0 (0 add, 0 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
-inline Scalar two_harmonic_pressure(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& H3, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void two_harmonic_cosine_coefficients(const Scalar& H1, const Scalar& H3, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) + Cx;
-  const Scalar _tmp1 = H3 * Scalar(9.0);
-  return (E * (_tmp0 * (((Ca * ((_tmp1 * Ca) + ((H3 * (Cx * Scalar(12.0))) - (H3 * Scalar(6.0))))) + ((Cx * ((Cx * (H3 * Scalar(24.0))) - (H3 * Scalar(12.0)))) + ((H1 * Scalar(2.0)) - _tmp1))) * (sqrt(D / _tmp0) * Scalar(0.78539816339744828))))) / b1;
+  out[0] = Scalar(0.0);
+  out[1] = H1;
+  out[2] = Scalar(0.0);
+  out[3] = H3;
+}
+
+// Contact pressure p(x), |x| < a: eq. 12 solved exactly, the cosine sum in the Legendre-Dirichlet form.
+// Cost: O(K) operations, K = 3.
+template <typename Scalar>
+inline Scalar two_harmonic_pressure(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& H3, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
+  Scalar A[4];
+  Scalar work[3];
+  two_harmonic_cosine_coefficients<Scalar>(H1, H3, A);
+  return wavecontact::harmonic_series_pressure<Scalar>(A, 3, work, E, b1, Ca, Cx, Sx, D);
 }
 
 // Load per unit length P (eq. 6).
-// Total ops: 12 (3 add, 9 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+// Cost: O(K) operations, K = 3.
 template <typename Scalar>
 inline Scalar two_harmonic_load(const Scalar& E, const Scalar& H1, const Scalar& H3, const Scalar& Ca, const Scalar& Sa) {
-  using std::sqrt;
-  return Sa * (E * (((Ca * (((H3 * Scalar(15.0)) * Ca) + (H3 * Scalar(6.0)))) + ((H1 * Scalar(2.0)) - (H3 * Scalar(3.0)))) * Scalar(0.78539816339744828)));
+  Scalar A[4];
+  Scalar work[3];
+  two_harmonic_cosine_coefficients<Scalar>(H1, H3, A);
+  return wavecontact::harmonic_series_load<Scalar>(A, 3, work, E, Ca, Sa);
 }
 
 // dP/dSa - dP/dCa, so that dP/da = (pi/b1) sin(a^) times this.
-// Total ops: 19 (5 add, 14 mul, 0 div, 0 sqrt, 0 neg), 1 temporaries
+// Cost: O(K) operations, K = 3.
 template <typename Scalar>
-inline Scalar two_harmonic_load_slope_factor(const Scalar& E, const Scalar& H1, const Scalar& H3, const Scalar& Ca, const Scalar& Sa) {
-  using std::sqrt;
-  const Scalar _tmp0 = H3 * (E * Scalar(4.7123889803846897));
-  return (Ca * (((H3 * (E * Scalar(11.780972450961725))) * Ca) + (_tmp0 - (Sa * (H3 * (E * Scalar(23.56194490192345))))))) + (((H1 * (E * Scalar(1.5707963267948966))) - (Sa * _tmp0)) - (H3 * (E * Scalar(2.3561944901923448))));
+inline Scalar two_harmonic_load_slope_factor(const Scalar& E, const Scalar& H1, const Scalar& H3, const Scalar& Ca, const Scalar& /*Sa*/) {
+  Scalar A[4];
+  Scalar work[3];
+  two_harmonic_cosine_coefficients<Scalar>(H1, H3, A);
+  return wavecontact::harmonic_series_load_slope_factor<Scalar>(A, 3, work, E, Ca);
 }
 
 // The profile in Cx = cos x^: y(x^) = Y(Cx).
-// Total ops: 7 (2 add, 5 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+// Cost: O(K) operations, K = 3.
 template <typename Scalar>
 inline Scalar two_harmonic_height(const Scalar& H1, const Scalar& H3, const Scalar& Cx) {
-  using std::sqrt;
-  return Cx * ((Cx * ((H3 * Scalar(4.0)) * Cx)) + (H1 - (H3 * Scalar(3.0))));
+  Scalar A[4];
+  two_harmonic_cosine_coefficients<Scalar>(H1, H3, A);
+  return wavecontact::harmonic_series_height<Scalar>(A, 3, Cx);
 }
 
 // dY/dCx: the right-hand side of the multi-zone contact solver.
-// Total ops: 6 (2 add, 4 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
+// Cost: O(K) operations, K = 3.
 template <typename Scalar>
 inline Scalar two_harmonic_height_slope(const Scalar& H1, const Scalar& H3, const Scalar& Cx) {
-  using std::sqrt;
-  return (Cx * ((H3 * Scalar(12.0)) * Cx)) + (H1 - (H3 * Scalar(3.0)));
+  Scalar A[4];
+  two_harmonic_cosine_coefficients<Scalar>(H1, H3, A);
+  return wavecontact::harmonic_series_height_slope<Scalar>(A, 3, Cx);
 }
 
 // The evaluators above behind the runtime's uniform interface.

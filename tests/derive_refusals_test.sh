@@ -44,7 +44,7 @@ slow="1/((H+cos(x))*(H2+cos(x))*(H3+cos(x))*(H4+cos(x)))"
 check "exceeds its budget of 1 s (--max-seconds); nothing is written" --profile "$slow" \
   --param H=3 --param H2=5 --param H3=7 --param H4=11 --name p --max-seconds 1
 # The memory budget (not enforced under AddressSanitizer, where the time budget ends it).
-check "the derivation exceeds its" --profile "(H*cos(x)+H2*cos(2*x)+H3*cos(3*x)+H4*cos(4*x))^8" \
+check "the derivation exceeds its" --profile "(H*cos(x)+H2*cos(2*x)+H3*cos(3*x)+H4*cos(4*x))^64" \
   --param H=3 --param H2=5 --param H3=7 --param H4=11 --name p --max-memory-mb 100 --max-seconds 5
 
 if [ "$failures" -ne 0 ]; then
