@@ -60,6 +60,14 @@ for label, measure, ours_name, baselines in rows:
             print(f"{label:40} {'n/a':>12} {baseline_label:>24} {'n/a':>12}")
             continue
         print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
+for k in (8, 16, 32, 64, 128, 256):
+    for label, shape in (("H cos(k x)", "harmonic"), ("H cos(x)^k", "power")):
+        now = time_ns(f"BM_derive_profile_{shape}/{k}/iterations:1")
+        whole = time_ns(f"BM_derive_whole_{shape}/{k}/iterations:1")
+        row = f"{'derive ' + label + ', k = ' + str(k) + ', ms':40} {now / 1e6 if now else float('nan'):12.4g}"
+        if whole is not None and now is not None:
+            row += f" {'whole, partial fractions':>24} {whole / 1e6:12.4g} {whole / now:7.1f}x"
+        print(row)
 one, two = time_ns("BM_waviness_pressure_threads/1/real_time"), time_ns("BM_waviness_pressure_threads/2/real_time")
 if one is not None and two is not None:
     print(f"{'waviness 1e6 points, 2 threads, ns':40} {two:12.4g} {'1 thread':>24} {one:12.4g} {one / two:7.2f}x")
