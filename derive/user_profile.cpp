@@ -86,6 +86,32 @@ void check_whole_order(const ProfileSpec& spec, const ex& Y) {
   }
 }
 
+// A parameter-free pole of the profile at cos x = c0 in [-1, 1] (refused before the engine
+// meets it: at x = 0 it is a pole at v^2 = 0, where the moments divide by zero).
+void check_poles_off_the_period(const ProfileSpec& spec, const ex& R) {
+  const GiNaC::symbol& c = sym::Cx();
+  const ex denominator = GiNaC::factor(R.normal().denom());
+  const std::vector<ex> factors = GiNaC::is_a<GiNaC::mul>(denominator)
+                                      ? std::vector<ex>(denominator.begin(), denominator.end())
+                                      : std::vector<ex>{denominator};
+  for (const ex& factor_power : factors) {
+    const ex factor = GiNaC::is_a<GiNaC::power>(factor_power) ? factor_power.op(0) : factor_power;
+    if (factor.degree(c) != 1) continue;
+    const ex root = (-factor.coeff(c, 0) / factor.coeff(c, 1)).normal();
+    if (!GiNaC::is_a<numeric>(root) || !GiNaC::ex_to<numeric>(root).is_real()) continue;
+    const numeric c0 = GiNaC::ex_to<numeric>(root);
+    if (c0 < -1 || c0 > 1) continue;
+    std::ostringstream os;
+    os.precision(17);
+    os << "the profile has a pole at cos x = " << c0;
+    if (c0 > -1) os << " (g(v) at v^2 = " << (1 - c0) / (1 + c0) << ")";
+    os << ", i.e. at x = +-" << std::acos(c0.to_double())
+       << " of the period 2 pi: it is unbounded there, and a contact zone reaching it has no "
+          "bounded solution";
+    refuse(spec, os.str());
+  }
+}
+
 ex parse(const ProfileSpec& spec, const std::vector<GiNaC::realsymbol>& parameters) {
   GiNaC::symtab table;
   table["x"] = sym::x();
@@ -143,6 +169,7 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
   try {
     const HarmonicSplit parts = split_harmonic_part(in_cosine(y));
     if (parts.cosine.empty()) check_whole_order(spec, parts.rational);
+    check_poles_off_the_period(spec, parts.rational);
     d.forms = derive_closed_forms(y, parts, d.sample);
   } catch (const InputRefused&) {
     throw;
@@ -155,20 +182,7 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
   const Radicals& radicals = d.forms.radicals;
   for (unsigned i = 0; i < radicals.size(); ++i) {
     const ex tau = radicals.pole(i);
-    if (!GiNaC::is_a<numeric>(tau)) {
-      d.pole_squares.push_back(tau);
-      continue;
-    }
-    const numeric value = GiNaC::ex_to<numeric>(tau);
-    if (value.is_real() && !value.is_negative()) {
-      std::ostringstream os;
-      os.precision(17);
-      os << "g(v) has a pole at v^2 = " << value << ", i.e. at x = +-"
-         << 2 * std::atan(std::sqrt(value.to_double()))
-         << " of the period 2 pi: the profile is unbounded there, and a contact zone "
-            "reaching it has no bounded solution";
-      refuse(spec, os.str());
-    }
+    if (!GiNaC::is_a<numeric>(tau)) d.pole_squares.push_back(tau);
   }
   return d;
 }
