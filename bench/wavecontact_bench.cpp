@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "generate.hpp"   // derive/
+#include "plain_kernel.hpp"
 #include "roughness.hpp"  // derive/
 #include "waviness.hpp"  // generated/
 #include "waviness_csrc.hpp"
@@ -102,6 +103,23 @@ void BM_waviness_pressure_scalar_libm(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * xs.size());
 }
 BENCHMARK(BM_waviness_pressure_scalar_libm)->Arg(1000000)->Unit(benchmark::kMillisecond);
+
+// The plain fast-math kernel (plain_kernel.cpp): the cost floor of the same formula.
+void BM_waviness_pressure_plain_fast_math(benchmark::State& state) {
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
+    state.SkipWithError("the plain kernel is built for AVX2 + FMA");
+    return;
+  }
+  const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
+  Eigen::ArrayXd p(xs.size());
+  for (auto _ : state) {
+    bench::plain_waviness_pressure(waviness.E, waviness.H1, waviness.b1, waviness.m, half_width,
+                                   xs.data(), p.data(), static_cast<std::size_t>(xs.size()));
+    benchmark::DoNotOptimize(p.data());
+  }
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_waviness_pressure_plain_fast_math)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_waviness_pressure_no_cse(benchmark::State& state) {
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);

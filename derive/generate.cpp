@@ -8,6 +8,7 @@
 #include "emit_common.hpp"
 #include "roughness.hpp"
 #include "symbols.hpp"
+#include "trigonometry.hpp"
 #include "waviness.hpp"
 
 namespace wavecontact::derive {
@@ -184,6 +185,7 @@ std::vector<GeneratedFile> generate_all() {
     for (auto& file : generate_profile(spec, regeneration_command())) files.push_back(std::move(file));
   }
   files.push_back({"profiles.hpp", profile_registry(profiles)});
+  files.push_back({"bounded_trigonometry.hpp", trigonometry_header(kernel_sine(), regeneration_command())});
   return files;
 }
 

@@ -38,7 +38,8 @@ def time_ns(name):
 
 rows = [
     ("waviness pressure, ns/point", per_item_ns, "BM_waviness_pressure_generated/1000000",
-     [("same formula, scalar libm", "BM_waviness_pressure_scalar_libm/1000000"),
+     [("plain -ffast-math kernel", "BM_waviness_pressure_plain_fast_math/1000000"),
+      ("same formula, scalar libm", "BM_waviness_pressure_scalar_libm/1000000"),
       ("numerical inversion", "BM_waviness_pressure_numerical/10000"),
       ("print_csrc, no CSE", "BM_waviness_pressure_no_cse/1000000")]),
 ]

@@ -6,7 +6,8 @@
 
 #include <cmath>
 
-#include "profiles.hpp"  // generated/
+#include "bounded_trigonometry.hpp"  // generated/
+#include "profiles.hpp"
 #include "roughness_evaluators.hpp"
 #include "waviness.hpp"
 
@@ -68,4 +69,11 @@ BOOST_AUTO_TEST_CASE(profile_instantiations_agree) {
   BOOST_TEST(f.first == static_cast<float>(l.first), tt::tolerance(1e-5f));
   BOOST_TEST(d.second == static_cast<double>(l.second), tt::tolerance(1e-14));
   BOOST_TEST(parametric_wave_curve_pole_square_0<double>(1, 3) == 2.0);  // (m+1)/(m-1)
+}
+
+// The derived bounded sine in float, double and long double (-Werror, -Wconversion).
+BOOST_AUTO_TEST_CASE(bounded_sine_instantiations_agree) {
+  const long double l = sinpi_quarter(0.2L);
+  BOOST_TEST(sinpi_quarter(0.2) == static_cast<double>(l), tt::tolerance(1e-15));
+  BOOST_TEST(sinpi_quarter(0.2f) == static_cast<float>(l), tt::tolerance(1e-6f));
 }

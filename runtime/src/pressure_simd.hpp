@@ -1,9 +1,10 @@
-// The array kernels of the pressure for a <= b1/2: the angle atoms by SLEEF's vectorised
-// sincospi (3.5 ulp, 4 or 8 points at a time), then, over a block of
-// points, either the generated waviness closed form (which the compiler vectorises) or the
-// roughness series with the zone's generated Legendre coefficients. Built for AVX2 + FMA in
-// their own translation unit (pressure_simd_avx2.cpp) and chosen at run time; other CPUs
-// take the scalar paths.
+// The array kernels of the pressure for a <= b1/2: the angle atoms from the generated
+// bounded sines (generated/bounded_trigonometry.hpp), then, over a block of points, either
+// the generated waviness closed form or the roughness series with the zone's generated
+// Legendre coefficients, all in loops the compiler vectorises (pressure_simd_kernels.hpp).
+// Built once per ISA in its own translation unit (pressure_simd_avx2.cpp: AVX2 + FMA;
+// pressure_simd_avx512.cpp: AVX-512F) and chosen at run time (array_kernel_isa()); other
+// CPUs take the scalar paths.
 #pragma once
 
 #include <cstddef>
@@ -20,28 +21,34 @@ struct WavinessZone {
 //   p_r = scale sqrt(D (1 + Cx)) sum_{j<n} P_{n-1-j}(Ca) V_j(Cx), scale = pi E* H2 n/(2 b1),
 // legendre[k] = P_k(Ca) from the generated roughness_n<N>_legendre.
 struct RoughnessZone {
-  double b1, a, scale;
+  double b1, a, Ca, Sa, scale;
   const double* legendre;
   int n;
 };
 
-// Whether this CPU runs the AVX2 kernels, and AVX-512 (for their sincospi).
+// Whether this CPU runs the vector kernels (array_kernel_isa() is not scalar).
 bool simd_pressure_available();
-bool avx512_available();
 
 // Points per pass of the kernels; a multiple of 8.
 inline constexpr std::size_t simd_block = 256;
 
-// sin(pi t[k]) and cos(pi t[k]) for k < simd_block (SLEEF, 3.5 ulp), 8 at a time; t, s
-// and c aligned to 64 bytes. Built with -mavx512f: call only if avx512_available().
-void sincospi_block_avx512(const double* t, double* s, double* c);
-
-// p[i] for the points x[i], i < count (finite, any period); 0 outside the zone.
+// p[i] for the points x[i], i < count (finite, any period); 0 outside the zone. On the
+// widest ISA of array_kernel_isa(); call only if simd_pressure_available().
 void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p,
                    std::size_t count);
 
-// p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period).
+// p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period); as above.
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
                                  std::size_t count);
+
+// The same per ISA: call only where the CPU has it.
+void simd_pressure_avx2(const WavinessZone& zone, Form form, const double* x, double* p,
+                        std::size_t count);
+void simd_pressure_avx512(const WavinessZone& zone, Form form, const double* x, double* p,
+                          std::size_t count);
+void simd_add_roughness_pressure_avx2(const RoughnessZone& zone, const double* x, double* p,
+                                      std::size_t count);
+void simd_add_roughness_pressure_avx512(const RoughnessZone& zone, const double* x, double* p,
+                                        std::size_t count);
 
 }  // namespace wavecontact::detail

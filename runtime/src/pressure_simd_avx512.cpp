@@ -1,18 +1,18 @@
-// Compiled with -mavx512f (runtime/CMakeLists.txt); called only where the CPU has it
-// (avx512_available()). SLEEF only: no generated code is compiled with these flags.
-#include <immintrin.h>
-#include <sleef.h>
-
-#include "pressure_simd.hpp"
+// Compiled with -mavx512f -mavx2 -mfma -O3 -fno-math-errno (runtime/CMakeLists.txt); called
+// only where the CPU has AVX-512F (array_kernel_isa()). The same kernels as the AVX2 unit,
+// 8 points a vector.
+#include "pressure_simd_kernels.hpp"
 
 namespace wavecontact::detail {
 
-void sincospi_block_avx512(const double* t, double* s, double* c) {
-  for (std::size_t k = 0; k < simd_block; k += 8) {
-    const Sleef___m512d_2 sc = Sleef_sincospid8_u35avx512f(_mm512_load_pd(t + k));
-    _mm512_store_pd(s + k, sc.x);
-    _mm512_store_pd(c + k, sc.y);
-  }
+void simd_pressure_avx512(const WavinessZone& zone, Form form, const double* x, double* p,
+                          std::size_t count) {
+  pressure_kernel(zone, form, x, p, count);
+}
+
+void simd_add_roughness_pressure_avx512(const RoughnessZone& zone, const double* x, double* p,
+                                        std::size_t count) {
+  add_roughness_kernel(zone, x, p, count);
 }
 
 }  // namespace wavecontact::detail

@@ -206,7 +206,8 @@ void TwoScaleContact::add_roughness_pressure(const Eigen::Ref<const Eigen::Array
   const WavinessParams& w = params_.waviness;
   const bool simd = form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_pressure_available();
   const int n = params_.roughness.n;
-  const detail::RoughnessZone zone{w.b1, a_, pi / w.b1 * w.E * params_.roughness.H2 * n / 2, legendre_.data(), n};
+  const detail::RoughnessZone zone{w.b1, a_, zone_.Ca, zone_.Sa,
+                                   pi / w.b1 * w.E * params_.roughness.H2 * n / 2, legendre_.data(), n};
   const double* xs = x.data();
   double* ps = p.data();
   detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, parallel_points,

@@ -113,7 +113,17 @@ namespace detail {
 
 bool simd_pressure_available() { return array_kernel_isa() != Isa::scalar; }
 
-bool avx512_available() { return array_kernel_isa() == Isa::avx512; }
+void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p,
+                   std::size_t count) {
+  if (array_kernel_isa() == Isa::avx512) return simd_pressure_avx512(zone, form, x, p, count);
+  simd_pressure_avx2(zone, form, x, p, count);
+}
+
+void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
+                                 std::size_t count) {
+  if (array_kernel_isa() == Isa::avx512) return simd_add_roughness_pressure_avx512(zone, x, p, count);
+  simd_add_roughness_pressure_avx2(zone, x, p, count);
+}
 
 }  // namespace detail
 

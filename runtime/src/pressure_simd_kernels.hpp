@@ -1,0 +1,132 @@
+// The array kernels' bodies, included by each per-ISA unit (pressure_simd_avx2.cpp,
+// pressure_simd_avx512.cpp) and compiled there with its flags: plain loops over blocks of
+// points that the compiler vectorises for that ISA. Everything here has internal linkage,
+// so no out-of-line copy compiled for one ISA can serve another unit
+// (tests/simd_units_export_entry_points_only.cmake checks the symbols).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "bounded_trigonometry.hpp"  // generated/
+#include "pressure_simd.hpp"
+#include "waviness.hpp"  // generated/
+
+namespace wavecontact::detail {
+namespace {
+
+constexpr std::size_t block = simd_block;  // points per pass
+
+struct Atoms {
+  alignas(64) double r[block], Cx[block], Sx[block], D[block];
+};
+
+// The atoms of angles.hpp for a block of points, from the derived sin(pi t), |t| <= 1/4
+// (generated/bounded_trigonometry.hpp: no range reduction), by exact identities. With r = |x|
+// reduced to the period, h = r/(2 b1) = x^/(2 pi), w = (b1 - 2r)/(2 b1) = 1/2 - 2h and
+// d = (a - r)/(2 b1) = (a^ - x^)/(2 pi):
+//   Sx = 1 - cos x^ = 2 sin^2(pi h),
+//   Cx = cos x^ = sin(pi w) where w <= 1/4 (x^ >= pi/4), else 1 - Sx (Cx > 1/sqrt2: exact
+//        enough, no cancellation),
+//   D  = cos x^ - cos a^ = 2 sin(pi d) sin(a^ - pi d)
+//      = 2 sin(pi d) (sin a^ cos(pi d) - cos a^ sin(pi d)),  cos(pi d) = 1 - 2 sin^2(pi d/2).
+// In the zone (r < a <= b1/2) h, d <= 1/4; each argument carries a relative error of a few eps
+// at most (b1 - 2r is exact for r >= b1/4, a - r for r >= a/2), which sin(pi t) does not
+// amplify there; the subtraction in D loses nothing (a^ - pi d lies in [a^/2, a^], within
+// [0, pi/2], so its first term is at most twice the result): every atom keeps its relative
+// accuracy, Cx where cos x^ -> 0, D at the zone's edge, Sx at its centre. Outside the zone
+// the values are finite and discarded. sin_a = sin a^, cos_a = cos a^.
+void compute_atoms(double b1, double a, double sin_a, double cos_a, const double* x, Atoms& out) {
+  const double period = 2 * b1, inv_period = 0.5 / b1;
+  for (std::size_t k = 0; k < block; ++k) {
+    const double r = std::fabs(std::fma(-std::nearbyint(x[k] * inv_period), period, x[k]));
+    const double w = (b1 - 2 * r) * inv_period, d = (a - r) * inv_period;
+    const double sin_h = generated::sinpi_quarter(r * inv_period);
+    const double sin_w = generated::sinpi_quarter(w);
+    const double sin_d = generated::sinpi_quarter(d);
+    const double sin_half_d = generated::sinpi_quarter(d * 0.5);
+    const double Sx = 2 * sin_h * sin_h;
+    const double cos_d = std::fma(-2 * sin_half_d, sin_half_d, 1.0);
+    out.r[k] = r;
+    out.Sx[k] = Sx;
+    out.Cx[k] = w <= 0.25 ? sin_w : 1 - Sx;
+    out.D[k] = 2 * sin_d * std::fma(sin_a, cos_d, -cos_a * sin_d);
+  }
+}
+
+// For each block of points: the atoms, then evaluate_block(atoms, value) (branch-free over
+// the whole block, so that it vectorises; outside the zone D < 0 and the value is
+// discarded), then store(k, value) for the points of the zone and store(k, 0) elsewhere.
+template <typename BlockEvaluator, typename Store>
+void pressure_blocks(double b1, double a, double Ca, double Sa, const double* x, std::size_t count,
+                     const BlockEvaluator& evaluate_block, const Store& store) {
+  Atoms atoms;  // every field read is written first
+  alignas(64) double padded[block], value[block];
+  const double sin_a = std::sqrt(Sa * (1 + Ca));  // no cancellation: 1 + Ca >= 1 for a <= b1/2
+  for (std::size_t start = 0; start < count; start += block) {
+    const std::size_t n = std::min(block, count - start);
+    const double* points = x + start;
+    if (n < block) {  // the tail, padded with the zone's centre
+      std::fill(std::copy(points, points + n, padded), padded + block, 0.0);
+      points = padded;
+    }
+    compute_atoms(b1, a, sin_a, Ca, points, atoms);
+    evaluate_block(atoms, value);
+    for (std::size_t k = 0; k < n; ++k) store(start + k, atoms.r[k] < a ? value[k] : 0.0);
+  }
+}
+
+template <typename Evaluator>
+void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::size_t count,
+                     const Evaluator& evaluate) {
+  pressure_blocks(
+      z.b1, z.a, z.Ca, z.Sa, x, count,
+      [&](const Atoms& atoms, double* value) {
+        for (std::size_t k = 0; k < block; ++k) value[k] = evaluate(atoms.Cx[k], atoms.Sx[k], atoms.D[k]);
+      },
+      [p](std::size_t i, double value) { p[i] = value; });
+}
+
+// sum_{j<n} P_{n-1-j}(Ca) V_j(Cx) by Clenshaw's recurrence in Reinsch's form,
+// d_j = (c_j + d_{j+1}) - 2 Sx b_{j+1}, b_j = d_j + b_{j+1}, as the generated
+// roughness_n<N>_pressure does per point (derive/roughness.hpp): here the coefficients come
+// once per zone and each step runs across the block's points (3 operations a point and a
+// step, the bound of the cost at large n).
+void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) {
+  alignas(64) double b[block], d[block], two_Sx[block];
+  for (std::size_t k = 0; k < block; ++k) b[k] = 0, d[k] = 0, two_Sx[k] = 2 * atoms.Sx[k];
+  for (int j = z.n - 1; j >= 0; --j) {
+    const double c = z.legendre[z.n - 1 - j];
+    for (std::size_t k = 0; k < block; ++k) {
+      const double d_j = std::fma(-b[k], two_Sx[k], c + d[k]);
+      b[k] += d_j;
+      d[k] = d_j;
+    }
+  }
+  for (std::size_t k = 0; k < block; ++k) {
+    value[k] = z.scale * std::sqrt((1 + atoms.Cx[k]) * atoms.D[k]) * d[k];
+  }
+}
+
+void pressure_kernel(const WavinessZone& z, Form form, const double* x, double* p,
+                     std::size_t count) {
+  const double E = z.E, H1 = z.H1, b1 = z.b1, m = z.m, Ca = z.Ca, Sa = z.Sa;  // not aliased by p
+  if (form == Form::exact) {
+    waviness_blocks(z, x, p, count, [=](double Cx, double Sx, double D) {
+      return generated::waviness_pressure_exact(E, H1, b1, m, Ca, Sa, Cx, Sx, D);
+    });
+  } else {
+    waviness_blocks(z, x, p, count, [=](double Cx, double Sx, double D) {
+      return generated::waviness_pressure_paper(E, H1, b1, m, Ca, Sa, Cx, Sx, D);
+    });
+  }
+}
+
+void add_roughness_kernel(const RoughnessZone& z, const double* x, double* p, std::size_t count) {
+  pressure_blocks(
+      z.b1, z.a, z.Ca, z.Sa, x, count, [&](const Atoms& atoms, double* value) { roughness_block(z, atoms, value); },
+      [p](std::size_t i, double value) { p[i] += value; });
+}
+
+}  // namespace
+}  // namespace wavecontact::detail
