@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the benchmarks and prints each figure next to its baseline, with the ratio.
-#   scripts/bench.sh [extra Google Benchmark options, e.g. --benchmark_min_time=0.01]
+#   scripts/bench.sh [extra Google Benchmark options, e.g. --benchmark_min_time=0.01, or
+#                    --benchmark_repetitions=5 for medians]
 # Raw results: build/bench/results.json (--benchmark_format=json).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -18,7 +19,10 @@ import json
 import os
 import sys
 
-results = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+# With --benchmark_repetitions, each figure is the median of the repetitions.
+runs = json.load(open(sys.argv[1]))["benchmarks"]
+results = {b["name"]: b for b in runs if b.get("run_type") != "aggregate"}
+results.update({b["run_name"]: b for b in runs if b.get("aggregate_name") == "median"})
 python_ns = None
 if os.path.exists(sys.argv[2]):
     python_ns = float(open(sys.argv[2]).read().split()[1])
