@@ -10,7 +10,9 @@
 # - PROFILE: a user profile y(x) (wavecontact-derive --profile, derive/user_profile.hpp) into
 #   profile_<name>.hpp. Register it:
 #     wavecontact::register_profile(wavecontact::generated::<name>_profile_evaluator());
-# Needs WAVECONTACT_DERIVE_EXECUTABLE (set by find_package(wavecontact)).
+# Needs WAVECONTACT_DERIVE_EXECUTABLE (set by find_package(wavecontact)). An optional
+# WAVECONTACT_DERIVE_LAUNCHER (a command prefix, e.g. `cmake -E env VAR=VALUE`) runs it, as the
+# project's own sanitizer build does to pass LeakSanitizer its suppressions.
 function(wavecontact_generate)
   cmake_parse_arguments(PARSE_ARGV 0 ARG "" "TARGET;PROFILE;EXPRESSION" "N;PARAMETERS")
   set(usage "usage: wavecontact_generate(TARGET <target> [N <n>...] [PROFILE <name> EXPRESSION <expr> [PARAMETERS <p>...]])")
@@ -43,7 +45,7 @@ function(wavecontact_generate)
     endforeach()
     add_custom_command(
       OUTPUT ${outputs}
-      COMMAND "${WAVECONTACT_DERIVE_EXECUTABLE}" ${arguments} --out "${out}"
+      COMMAND ${WAVECONTACT_DERIVE_LAUNCHER} "${WAVECONTACT_DERIVE_EXECUTABLE}" ${arguments} --out "${out}"
       DEPENDS "${WAVECONTACT_DERIVE_EXECUTABLE}"
       COMMENT "wavecontact-derive: roughness evaluators for n = ${ARG_N}"
       VERBATIM)
@@ -60,7 +62,7 @@ function(wavecontact_generate)
     set(outputs "${profile_out}/profile_${ARG_PROFILE}.hpp" "${profile_out}/profile_${ARG_PROFILE}_manifest.txt")
     add_custom_command(
       OUTPUT ${outputs}
-      COMMAND "${WAVECONTACT_DERIVE_EXECUTABLE}" ${arguments} --out "${profile_out}"
+      COMMAND ${WAVECONTACT_DERIVE_LAUNCHER} "${WAVECONTACT_DERIVE_EXECUTABLE}" ${arguments} --out "${profile_out}"
       DEPENDS "${WAVECONTACT_DERIVE_EXECUTABLE}"
       COMMENT "wavecontact-derive: profile ${ARG_PROFILE} = ${ARG_EXPRESSION}"
       VERBATIM)
