@@ -213,14 +213,21 @@ void BM_roughness_pressure_numerical(benchmark::State& state) {
 }
 BENCHMARK(BM_roughness_pressure_numerical)->Arg(16)->Arg(64)->Arg(256)->Unit(benchmark::kMillisecond);
 
-void BM_load(benchmark::State& state) {
-  double a = 0.5;
+// P(a) for a sweeping [lo, hi) in steps of 0.01 (b1 = 10).
+void load_sweep(benchmark::State& state, double lo, double hi) {
+  double a = lo;
   for (auto _ : state) {
     benchmark::DoNotOptimize(load(waviness, a));
-    a = a < 4.9 ? a + 0.01 : 0.5;
+    a = a < hi ? a + 0.01 : lo;
   }
 }
+
+void BM_load(benchmark::State& state) { load_sweep(state, 0.5, 4.9); }
 BENCHMARK(BM_load);
+
+// Beyond b1/2: the sub-interval closed forms with I_{j,l}.
+void BM_load_beyond_half(benchmark::State& state) { load_sweep(state, 5.01, 9.9); }
+BENCHMARK(BM_load_beyond_half);
 
 // a(P) in the single-asperity regime (a <= b1/2): the closed-form inverse.
 void BM_single_asperity_half_width(benchmark::State& state) {

@@ -33,11 +33,11 @@ std::string double_literal(const numeric& q) {
 
 namespace {
 
-enum class Op { Constant, Input, Add, Sub, Mul, Div, Neg, Sqrt };
+enum class Op { Constant, Input, Add, Sub, Mul, Div, Neg, Sqrt, Call };
 
 struct Node {
   Op op;
-  std::string text;  // Constant literal or Input name
+  std::string text;  // Constant literal, Input name, or a Call's function and leading arguments
   int a = -1, b = -1;
   bool operator<(const Node& o) const {
     return std::tie(op, text, a, b) < std::tie(o.op, o.text, o.a, o.b);
@@ -93,6 +93,13 @@ class Graph {
       const auto& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
       if (!inputs_.count(name)) throw std::invalid_argument("emit: symbol " + name + " is not an argument");
       return {false, intern({Op::Input, name})};
+    }
+    if (GiNaC::is_a<GiNaC::function>(e) &&
+        GiNaC::ex_to<GiNaC::function>(e).get_name() == "quadratic_moment") {
+      // I_{j,l}(z) of the sub-interval moments: wavecontact/quadratic_moment.hpp.
+      std::ostringstream call;
+      call << "wavecontact::quadratic_moment<Scalar>(" << e.op(0) << ", " << e.op(1) << ", ";
+      return {false, intern({Op::Call, call.str(), lower(e.op(2)), lower(e.op(3))})};
     }
     if (GiNaC::is_a<GiNaC::add>(e)) return {false, lower_sum(e)};
     if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return lower_product(e);
@@ -261,6 +268,7 @@ class Printer {
       case Op::Div: ++c.divisions; break;
       case Op::Sqrt: ++c.square_roots; break;
       case Op::Neg: ++c.negations; break;
+      case Op::Call: ++c.calls; break;
       default: break;
     }
   }
@@ -278,6 +286,7 @@ class Printer {
       case Op::Div: s = expression(n.a) + " / " + expression(n.b); break;
       case Op::Neg: return "-" + expression(n.a);
       case Op::Sqrt: return "sqrt(" + expression(n.a, true) + ")";
+      case Op::Call: return n.text + expression(n.a, true) + ", " + expression(n.b, true) + ")";
     }
     return top ? s : "(" + s + ")";
   }
@@ -321,7 +330,8 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   for (std::string line; std::getline(doc, line);) os << "// " << line << "\n";
   os << "// Total ops: " << counts.total() << " (" << counts.additions << " add, "
      << counts.multiplications << " mul, " << counts.divisions << " div, "
-     << counts.square_roots << " sqrt, " << counts.negations << " neg), "
+     << counts.square_roots << " sqrt, " << counts.negations << " neg"
+     << (counts.calls > 0 ? ", " + std::to_string(counts.calls) + " quadratic_moment" : "") << "), "
      << counts.temporaries << " temporaries\n";
   os << "template <typename Scalar>\ninline " << (returns_value ? "Scalar " : "void ") << f.name << "(";
   for (std::size_t i = 0; i < f.arguments.size(); ++i) {

@@ -86,6 +86,27 @@ std::string roughness_manifest(const std::vector<int>& ns) {
 }
 
 
+// The sum of the terms c sqrt(r) I_{j,l}(z).
+ex sum_of(const std::vector<MomentTerm>& terms) {
+  ex sum = 0;
+  for (const MomentTerm& term : terms) sum += as_ex(term);
+  return sum;
+}
+
+// Manifest lines per term c sqrt(r) I_{j,l}(z): rational, radicand, and j, l, z, 1 + z.
+void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms) {
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const std::string prefix = name + "[" + std::to_string(i) + "]";
+    os << prefix << ".rational = " << canonical_rational(terms[i].rational) << "\n"
+       << prefix << ".radicand = " << canonical_rational(terms[i].radicand) << "\n";
+    if (terms[i].l > 0) {  // the term's factor I_{j,l}(z)
+      os << prefix << ".j = " << terms[i].j << "\n" << prefix << ".l = " << terms[i].l << "\n"
+         << prefix << ".z = " << canonical_rational(terms[i].z) << "\n"
+         << prefix << ".one_plus_z = " << canonical_rational(terms[i].one_plus_z) << "\n";
+    }
+  }
+}
+
 std::string waviness_header(const WavinessDerivation& d) {
   const std::vector<ex> point_arguments{sym::E(),  sym::H1(), sym::b1(), sym::m(), sym::Ca(),
                                         sym::Sa(), sym::Cx(), sym::Sx(), sym::D()};
@@ -107,6 +128,25 @@ std::string waviness_header(const WavinessDerivation& d) {
       {"waviness_pa_over_pstar",
        "Dimensionless mean pressure pa/p* = P/(pi E* H1), p* = pi E* H1/(2 b1).",
        {sym::m(), sym::Ca(), sym::Sa()}, single_term(d.pa_over_pstar_angle)},
+      {"waviness_load_beyond_half",
+       "Load per unit length P (eq. 6) for b1/2 < a < b1, where the zone reaches the |cos|\n"
+       "branch of eq. 2: the sub-interval moments of both branches (derive/sub_interval.hpp),\n"
+       "I_{j,l} from wavecontact/quadratic_moment.hpp.",
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_beyond_half_angle)},
+      {"waviness_load_slope_factor_beyond_half",
+       "dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.",
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_slope_factor_beyond_half)},
+      {"waviness_top_piece_argument",
+       "z of the top piece's I_{j,l} beyond b1/2: where it is >= 1 (towards b1/2, where it grows\n"
+       "without bound) the near_half forms below hold the digits, elsewhere the beyond_half ones.",
+       {sym::m(), sym::Ca(), sym::Sa()}, d.top_piece_argument},
+      {"waviness_load_near_half",
+       "waviness_load_beyond_half with the top piece in its large-argument form (I_{j,l}(z) =\n"
+       "K z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z)): for waviness_top_piece_argument >= 1.",
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_near_half_angle)},
+      {"waviness_load_slope_factor_near_half",
+       "dP/dSa - dP/dCa of waviness_load_near_half.",
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_slope_factor_near_half)},
       {"waviness_height",
        "The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).",
        {sym::H1(), sym::m(), sym::Cx()}, d.height},
@@ -122,7 +162,8 @@ std::string waviness_header(const WavinessDerivation& d) {
         "// runtime/include/wavecontact/angles.hpp:\n"
         "//   Ca = cos a^, Sa = 1 - cos a^, Cx = cos x^, Sx = 1 - cos x^, D = cos x^ - cos a^,\n"
         "// a^ = pi a/b1, x^ = pi x/b1. Every function is a template on the scalar type.\n"
-        "#pragma once\n\n#include <cmath>\n\nnamespace wavecontact::generated {\n";
+        "#pragma once\n\n#include <cmath>\n\n#include \"wavecontact/quadratic_moment.hpp\"\n\n"
+        "namespace wavecontact::generated {\n";
   for (const auto& f : functions) os << "\n" << emit_function(f);
   os << "\n}  // namespace wavecontact::generated\n";
   return os.str();
@@ -155,6 +196,13 @@ std::string manifest(const WavinessDerivation& d) {
   write_terms(os, "waviness.load.angle", d.load_angle);
   write_terms(os, "waviness.pa_over_pstar.angle", d.pa_over_pstar_angle);
   write_terms(os, "waviness.load_slope_factor.angle", d.load_slope_factor);
+  os << "waviness.flank.g = " << canonical_rational(d.flank_g) << "\n";
+  write_moment_terms(os, "waviness.load.beyond_half", d.load_beyond_half_v);
+  write_moment_terms(os, "waviness.load.beyond_half.angle", d.load_beyond_half_angle);
+  write_moment_terms(os, "waviness.load_slope_factor.beyond_half.angle", d.load_slope_factor_beyond_half);
+  write_moment_terms(os, "waviness.load.near_half.angle", d.load_near_half_angle);
+  write_moment_terms(os, "waviness.load_slope_factor.near_half.angle", d.load_slope_factor_near_half);
+  os << "waviness.top_piece_argument = " << canonical_rational(d.top_piece_argument) << "\n";
   os << "waviness.height = " << canonical_rational(d.height) << "\n";
   os << "waviness.height_slope = " << canonical_rational(d.height_slope) << "\n";
   return os.str();

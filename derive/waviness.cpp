@@ -1,5 +1,7 @@
 #include "waviness.hpp"
 
+#include "angle_form.hpp"
+#include "block_keer.hpp"
 #include "hilbert.hpp"
 #include "symbols.hpp"
 
@@ -19,6 +21,83 @@ ex printed_eq13_rational() {
          (pow(m - m * s + s + 1, 2) * (m - m * alpha2 + alpha2 + 1));
 }
 
+GiNaC::exmap sample_point_beyond_half() {
+  GiNaC::exmap point = sample_point_v();
+  point[sym::alpha()] = GiNaC::numeric(3, 2);  // a^ ~ 1.97 > pi/2
+  point.erase(sym::s());
+  point.erase(sym::u());
+  return point;
+}
+
+namespace {
+
+// alpha^2 = (1 - Ca)/(1 + Ca) in a rational function of alpha^2: the argument of I_{j,l}.
+ex in_zone_cosine(const ex& e) {
+  const ex Ca = sym::Ca();
+  return GiNaC::factor(e.subs(sym::alpha() == GiNaC::sqrt((1 - Ca) / (1 + Ca))).normal());
+}
+
+// A moment term in angle atoms: its factor c sqrt(r) by to_angle_atoms, its argument z in Ca.
+MomentTerm moment_in_angles(const MomentTerm& term, const GiNaC::exmap& sample) {
+  const RootTerm factor = to_angle_atoms({term.rational, term.radicand}, sample);
+  if (term.l == 0) return {factor.rational, factor.radicand, 0, 0, 0, 0};
+  return {factor.rational, factor.radicand, term.j, term.l, in_zone_cosine(term.z),
+          in_zone_cosine(term.one_plus_z)};
+}
+
+// dF/dSa - dF/dCa of c sqrt(r) I_{j,l}(z): the factor's derivative times I, plus
+// c sqrt(r) (-l I_{j+1,l+1}(z)) dz (two terms, both c' sqrt(r) I).
+std::vector<MomentTerm> slope_factor(const MomentTerm& term) {
+  auto D = [](const ex& e) { return e.diff(sym::Sa()) - e.diff(sym::Ca()); };
+  const ex& c = term.rational;
+  const ex& r = term.radicand;
+  std::vector<MomentTerm> terms{
+      {((D(c) * r + c * D(r) / 2) / r).normal(), r, term.j, term.l, term.z, term.one_plus_z}};
+  if (term.l > 0) {
+    terms.push_back({(-term.l * c * D(term.z)).normal(), r, term.j + 1, term.l + 1, term.z, term.one_plus_z});
+  }
+  return terms;
+}
+
+// P = 2 pi sqrt(1 + alpha^2) (M_[0,1][Phi_top] + M_[1,alpha][Phi_flank]), as terms.
+std::vector<MomentTerm> load_terms(const std::vector<MomentTerm>& moments) {
+  std::vector<MomentTerm> terms;
+  for (MomentTerm term : moments) {
+    term.rational = (2 * GiNaC::Pi * term.rational).normal();
+    term.radicand = (term.radicand * (1 + GiNaC::pow(sym::alpha(), 2))).normal();
+    terms.push_back(term);
+  }
+  return terms;
+}
+
+void derive_beyond_half(WavinessDerivation& d) {
+  const ex m = sym::m(), c = GiNaC::cos(sym::x());
+  d.flank_g = hilbert_rhs(sym::H1() * (m + 1) * c / (1 - m * c));
+  const std::vector<MomentTerm> top = load_terms(inner_moment(load_integrand(d.g), 1));
+  const std::vector<MomentTerm> flank = load_terms(outer_moment(load_integrand(d.flank_g), 1));
+  const GiNaC::exmap sample = sample_point_beyond_half();
+  std::vector<MomentTerm> near_half;
+  for (const MomentTerm& term : top) {
+    d.load_beyond_half_v.push_back(term);
+    for (const MomentTerm& part : large_argument_form(term)) near_half.push_back(part);
+  }
+  for (const MomentTerm& term : flank) {
+    d.load_beyond_half_v.push_back(term);
+    near_half.push_back(term);
+  }
+  for (const MomentTerm& term : d.load_beyond_half_v) d.load_beyond_half_angle.push_back(moment_in_angles(term, sample));
+  for (const MomentTerm& term : near_half) d.load_near_half_angle.push_back(moment_in_angles(term, sample));
+  for (const MomentTerm& term : d.load_beyond_half_angle) {
+    for (const MomentTerm& part : slope_factor(term)) d.load_slope_factor_beyond_half.push_back(part);
+  }
+  for (const MomentTerm& term : d.load_near_half_angle) {
+    for (const MomentTerm& part : slope_factor(term)) d.load_slope_factor_near_half.push_back(part);
+  }
+  d.top_piece_argument = in_zone_cosine(top.front().z);
+}
+
+}  // namespace
+
 WavinessDerivation derive_waviness() {
   WavinessDerivation d;
   static_cast<ClosedForms&>(d) = derive_closed_forms(parametric_wave_curve());
@@ -36,6 +115,7 @@ WavinessDerivation derive_waviness() {
   d.pa_over_pstar_v = scaled(d.load_v, 1 / (GiNaC::Pi * sym::E() * sym::H1()));
   d.paper_pressure_angle = in_angles(d.paper_pressure_v);
   d.pa_over_pstar_angle = in_angles(d.pa_over_pstar_v);
+  derive_beyond_half(d);
   return d;
 }
 

@@ -7,6 +7,7 @@
 #include <ginac/ginac.h>
 
 #include "closed_forms.hpp"
+#include "sub_interval.hpp"
 
 namespace wavecontact::derive {
 
@@ -18,6 +19,17 @@ struct WavinessDerivation : ClosedForms {
   std::vector<RootTerm> paper_pressure_v, paper_pressure_angle;
   // pa/p* = P / (pi E* H1), dimensionless.
   std::vector<RootTerm> pa_over_pstar_v, pa_over_pstar_angle;
+  // Beyond a = b1/2 the zone reaches the |cos| branch of eq. 2 at v = 1: the load is the sum
+  // of the sub-interval moments (sub_interval.hpp) of the two branches' g, eq. 6 by MATH.md
+  // fact 7 (load_integrand); in v-variables, in angle atoms, and dP/dSa - dP/dCa.
+  GiNaC::ex flank_g;  // eq. 11 of the branch cos x^ <= 0: y = H1 (m+1) cos x^/(1 - m cos x^)
+  std::vector<MomentTerm> load_beyond_half_v, load_beyond_half_angle;
+  std::vector<MomentTerm> load_slope_factor_beyond_half;
+  // Near b1/2 the top piece [0, 1] of the zone is nearly the whole of it (its argument z of
+  // I_{j,l} grows without bound): the same load with that piece in large_argument_form, and
+  // the argument, in angle atoms, whose value >= 1 selects this form.
+  std::vector<MomentTerm> load_near_half_angle, load_slope_factor_near_half;
+  GiNaC::ex top_piece_argument;
 };
 
 // y(x^) = H1 (m+1) cos x^ / (m cos x^ + 1): the analytic branch of eq. 2 (cos >= 0).
@@ -28,5 +40,9 @@ GiNaC::ex parametric_wave_curve();
 GiNaC::ex printed_eq13_rational();
 
 WavinessDerivation derive_waviness();
+
+// A point of the domain beyond b1/2 (alpha = 3/2, m = 1/2): fixes the signs of the angle forms
+// there.
+GiNaC::exmap sample_point_beyond_half();
 
 }  // namespace wavecontact::derive

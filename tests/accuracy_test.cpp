@@ -135,6 +135,65 @@ BOOST_AUTO_TEST_CASE(load_within_64_eps) {
   check(ratio);
 }
 
+namespace {
+
+// A closed form of sub-interval moment terms (c sqrt(r) I_{j,l}(z) in angle atoms) at 40
+// digits, the atoms from the exact a and b1: Ca = cos(pi a/b1), Sa = 1 - Ca.
+GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTerm>& terms,
+                                const PhysicalPoint& p) {
+  using wavecontact::test::exact;
+  namespace sym = wavecontact::derive::sym;
+  const GiNaC::numeric Ca = GiNaC::cos(GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * exact(p.a) / exact(p.b1)).evalf()));
+  GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::E(), exact(p.E)},
+                     {sym::H1(), exact(p.H1)}, {sym::m(), exact(p.m)}};
+  GiNaC::ex sum = 0;
+  for (const auto& term : terms) sum += wavecontact::derive::as_ex(term);
+  return GiNaC::ex_to<GiNaC::numeric>(sum.subs(point).evalf());
+}
+
+}  // namespace
+
+// Beyond b1/2 (the zone reaches the |cos| branch of eq. 2): the load, pa/p* and dP/da in
+// closed form (derive/sub_interval.hpp, I_{j,l} in wavecontact/quadratic_moment.hpp) against
+// the same derived forms at 40 digits, over m from 0 to 1e4 and a from just above b1/2 to b1:
+// the load and pa/p* within 64 eps; dP/da within 64 eps but for the cancellation between the
+// two pieces of the zone as a -> b1/2+, bounded by 64 (1 + (-cos a^)^(-1/2)/8) eps.
+BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
+  wavecontact::test::Precision precision(wavecontact::test::reference_digits);
+  const auto& d = waviness();
+  ErrorReport load{"load, a > b1/2"}, ratio{"pa/p*, a > b1/2"}, slope{"dP/da, a > b1/2"};
+  const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
+  std::size_t k = 0;
+  for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 100.0, 1e3, 1e4}) {
+    for (double fa : {0.5000001, 0.501, 0.55, 0.6, 0.75, 0.9, 0.99, 0.9999, 1.0}) {
+      const auto& [E, H1, b1] = scales[k++ % scales.size()];
+      const PhysicalPoint p{E, H1, b1, m, fa * b1, 0};
+      const wavecontact::WavinessParams params{H1, b1, m, E};
+      const GiNaC::numeric P = evaluate_moments(d.load_beyond_half_angle, p);
+      load.add(error_in_eps(wavecontact::load(params, p.a), P), p);
+      ratio.add(error_in_eps(wavecontact::pa_over_pstar(params, p.a),
+                             P / GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * p.E * p.H1).evalf())),
+                p);
+      if (fa < 1) {  // dP/da = (pi/b1) sin(pi a/b1) F vanishes at a = b1
+        const GiNaC::numeric F = evaluate_moments(d.load_slope_factor_beyond_half, p);
+        const GiNaC::numeric angle = GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * wavecontact::test::exact(p.a) /
+                                                                   wavecontact::test::exact(b1)).evalf());
+        const GiNaC::numeric dPda =
+            GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi / wavecontact::test::exact(b1)).evalf()) * GiNaC::sin(angle) * F;
+        const double error = error_in_eps(wavecontact::load_slope(params, p.a), dPda);
+        slope.add(error, p);
+        // Towards b1/2 the two pieces' terms of dP/da grow like (-cos a^)^(-1/2) and cancel.
+        const double growth = 1 / std::sqrt(-std::cos(M_PI * fa));
+        BOOST_TEST(error <= tolerance_eps * (1 + growth / 8),
+                   "dP/da at m = " << m << ", a/b1 = " << fa << ": " << error << " eps");
+      }
+    }
+  }
+  check(load);
+  check(ratio);
+  BOOST_TEST_MESSAGE(slope.summary());
+}
+
 BOOST_AUTO_TEST_CASE(inverse_of_load_round_trips) {
   ErrorReport report{"a(P(a))"};
   for (const auto& p : domain_points()) {

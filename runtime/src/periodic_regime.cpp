@@ -12,7 +12,6 @@ namespace wavecontact::detail {
 namespace {
 
 constexpr double pi = boost::math::double_constants::pi;
-constexpr double half_pi = boost::math::double_constants::half_pi;
 constexpr unsigned max_depth = 12;
 constexpr double tolerance = 1e-13;
 
@@ -48,12 +47,6 @@ double slope_rhs_derivative(double m, double v) {
   return (m + 1) * ((1 + 3 * v2) * q - 2 * v * (1 + v2) * dq) / (q * q * q);
 }
 
-// phi where the zone's image of cos x^ = 0 lies (the kink), or pi/2 if a^ <= pi/2.
-double kink_angle(double s) {
-  const double sine = 1 / (std::sqrt(2.0) * s);
-  return sine < 1 ? std::asin(sine) : half_pi;
-}
-
 }  // namespace
 
 double periodic_pressure(double m, HalfAngles zone, HalfAngles point, double D) {
@@ -77,25 +70,6 @@ double periodic_pressure(double m, HalfAngles zone, HalfAngles point, double D) 
   }
   const double root = std::sqrt(D / 2) / (zone.c * point.c);  // sqrt(alpha^2 - u^2)
   return root / pi * integrate_pieces(divided_difference, breaks);
-}
-
-double periodic_load(double m, double s) {
-  auto integrand = [&](double phi) {
-    const double t = s * std::sin(phi), cosine = 1 - 2 * t * t;  // cos x^
-    const double q = 1 + m * std::fabs(cosine);
-    return t * t / (q * q);
-  };
-  return 4 * (m + 1) * integrate_pieces(integrand, {0, kink_angle(s), half_pi});
-}
-
-double periodic_load_slope(double m, double s) {
-  auto integrand = [&](double phi) {
-    const double sine = std::sin(phi), t = s * sine, cosine = 1 - 2 * t * t;
-    const double q = 1 + m * std::fabs(cosine);
-    const double N = cosine >= 0 ? 1 + 2 * m - m * cosine : 1 - 2 * m + m * cosine;
-    return sine * sine * N / (q * q * q);
-  };
-  return 8 * (m + 1) * s * integrate_pieces(integrand, {0, kink_angle(s), half_pi});
 }
 
 }  // namespace wavecontact::detail

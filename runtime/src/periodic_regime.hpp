@@ -1,11 +1,15 @@
 // The parametric wave curve beyond a = b1/2 (the "periodic regime" of the seed's Fig. 5b):
 // the zone reaches the |cos| branch of eq. 2, so the right-hand side of eq. 5 is
 //   g(v) = E* H1 (m+1) v (1+v^2) / (1 + v^2 + m |1 - v^2|)^2,
-// piecewise rational with a kink in its slope at v = +-1 (cos x^ = 0). The inversion is
+// piecewise rational with a kink in its slope at v = +-1 (cos x^ = 0). The pressure is
 // evaluated by adaptive Gauss-Kronrod quadrature split at the kinks, which converges
 // geometrically on each smooth piece (MATH.md section 4). Normalised: b1 = pi, H1 = E* = 1;
-// angles are passed as half-angle sines and cosines so that nothing cancels.
+// angles are passed as half-angle sines and cosines so that nothing cancels. The load and
+// its slope have closed forms (derive/sub_interval.hpp).
 #pragma once
+
+#include "wavecontact/angles.hpp"
+#include "wavecontact/parameters.hpp"
 
 namespace wavecontact::detail {
 
@@ -18,13 +22,11 @@ struct HalfAngles {
 // 0 <= x^ < a^. D = cos x^ - cos a^ (computed without cancellation by the caller).
 double periodic_pressure(double m, HalfAngles zone, HalfAngles point, double D);
 
-// P^ = 2 sqrt2 Int_0^a^ G sin(x^/2)/sqrt(cos x^ - cos a^) dx^ (MATH.md fact 7, eq. 6), with
-// sin(x^/2) = s sin(phi):  P^ = 4 (m+1) s^2 Int_0^{pi/2} sin^2(phi) / (1 + m |cos x^|)^2 dphi.
-double periodic_load(double m, double s);
+// F = dP/dSa - dP/dCa of the exact load, 0 < a <= b1, from the closed forms on either side of
+// b1/2 (generated/waviness.hpp): dP/da = (pi/b1) sin(pi a/b1) F (waviness.cpp).
+double load_slope_factor(const WavinessParams& params, double a);
 
-// dP^/ds, the same integral differentiated under the sign:
-// 8 (m+1) s Int_0^{pi/2} sin^2(phi) N(cos x^) / (1 + m |cos x^|)^3 dphi,
-// N(c) = 1 + 2m - m c for c >= 0 and 1 - 2m + m c for c < 0.
-double periodic_load_slope(double m, double s);
+// The exact load for b1/2 < a <= b1 from its closed forms (waviness.cpp).
+double load_beyond_half(double E, double H1, double m, const ZoneAngles& zone);
 
 }  // namespace wavecontact::detail

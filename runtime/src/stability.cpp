@@ -123,11 +123,10 @@ LoadCurve::LoadCurve(const WavinessParams& params)
       admissible_([params](double a) { return admissibility(params, a).admissible; }),
       end_(params.b1) {
   validate(params, "wavecontact::LoadCurve");
-  // dP/da has the sign of dP/ds, s = sin(pi r/2), r = a/b1 in (0, 1]; dP/ds does not
-  // vanish at r = 1 as dP/da does, through ds/da.
-  locate_turning_points([m = params.m](double r) {
-    return detail::periodic_load_slope(m, boost::math::sin_pi(r / 2));
-  });
+  // dP/da = (pi/b1) sin(pi a/b1) F(a) has the sign of the slope factor F, r = a/b1 in (0, 1];
+  // F does not vanish at r = 1 as dP/da does, through the sine.
+  const WavinessParams unit{1.0, 1.0, params.m, 1.0};
+  locate_turning_points([unit](double r) { return detail::load_slope_factor(unit, r); });
 }
 
 LoadCurve::LoadCurve(const Profile& profile)

@@ -131,10 +131,8 @@ double pa_over_pstar(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::pa_over_pstar";
   validate(params, function);
   require_half_width(function, params, a, form, true);
-  if (periodic_quadrature(params, a, form)) {
-    return detail::periodic_load(params.m, boost::math::sin_pi(a / (2 * params.b1))) / pi;
-  }
   const ZoneAngles zone = zone_angles(a, params.b1);
+  if (form == Form::exact && a > params.b1 / 2) return detail::load_beyond_half(1.0, 1.0, params.m, zone) / pi;
   return generated::waviness_pa_over_pstar(params.m, zone.Ca, zone.Sa);
 }
 
@@ -142,27 +140,42 @@ double load(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::load";
   validate(params, function);
   require_half_width(function, params, a, form, true);
-  if (periodic_quadrature(params, a, form)) {
-    return params.E * params.H1 *
-           detail::periodic_load(params.m, boost::math::sin_pi(a / (2 * params.b1)));
-  }
   const ZoneAngles zone = zone_angles(a, params.b1);
+  // Beyond b1/2 the exact pressure reaches the |cos| branch (the printed form continues its
+  // own closed form, whose load is waviness_load).
+  if (form == Form::exact && a > params.b1 / 2) return detail::load_beyond_half(params.E, params.H1, params.m, zone);
   return generated::waviness_load(params.E, params.H1, params.m, zone.Ca, zone.Sa);
 }
+
+namespace detail {
+
+// Beyond b1/2: the form that holds the digits, by the top piece's argument z (waviness.hpp):
+// the near-half form where z >= 1 for the load (within 3 eps of the 40-digit value either
+// way), where z >= 4 for its slope, whose terms cancel more (tests/accuracy_test.cpp).
+double load_beyond_half(double E, double H1, double m, const ZoneAngles& zone) {
+  return generated::waviness_top_piece_argument(m, zone.Ca, zone.Sa) >= 1
+             ? generated::waviness_load_near_half(E, H1, m, zone.Ca, zone.Sa)
+             : generated::waviness_load_beyond_half(E, H1, m, zone.Ca, zone.Sa);
+}
+
+double load_slope_factor(const WavinessParams& params, double a) {
+  const ZoneAngles zone = zone_angles(a, params.b1);
+  const double E = params.E, H1 = params.H1, m = params.m, Ca = zone.Ca, Sa = zone.Sa;
+  if (a <= params.b1 / 2) return generated::waviness_load_slope_factor(E, H1, m, Ca, Sa);
+  return generated::waviness_top_piece_argument(m, Ca, Sa) >= 4
+             ? generated::waviness_load_slope_factor_near_half(E, H1, m, Ca, Sa)
+             : generated::waviness_load_slope_factor_beyond_half(E, H1, m, Ca, Sa);
+}
+
+}  // namespace detail
 
 double load_slope(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::load_slope";
   validate(params, function);
   require_half_width(function, params, a, Form::exact, true);
-  if (!periodic_quadrature(params, a, Form::exact)) {
-    const ZoneAngles zone = zone_angles(a, params.b1);
-    return pi / params.b1 * boost::math::sin_pi(a / params.b1) *
-           generated::waviness_load_slope_factor(params.E, params.H1, params.m, zone.Ca, zone.Sa);
-  }
-  const double angle = a / (2 * params.b1);  // s = sin(pi angle), ds/da = pi cos(pi angle)/(2 b1)
-  return params.E * params.H1 *
-         detail::periodic_load_slope(params.m, boost::math::sin_pi(angle)) * pi *
-         boost::math::cos_pi(angle) / (2 * params.b1);
+  // sin(pi a/b1) = sin(pi (b1 - a)/b1), b1 - a exact beyond b1/2: no digits lost as a -> b1.
+  const double sine = boost::math::sin_pi((a > params.b1 / 2 ? params.b1 - a : a) / params.b1);
+  return pi / params.b1 * sine * detail::load_slope_factor(params, a);
 }
 
 double pstar(const WavinessParams& params) {

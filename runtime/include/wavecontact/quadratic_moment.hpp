@@ -13,7 +13,9 @@
 //                   I_{j+1,l} = (I_{j,l-1} - I_{j,l})/z, which cancels little there.
 // The series converge like (3/4)^k and (7/8)^k (a few hundred terms at most); tests/
 // quadratic_moment_test.cpp measures j <= 3, l <= 4 against quadrature.
-// dI_{j,l}/dz = -l I_{j+1,l+1}.
+// dI_{j,l}/dz = -l I_{j+1,l+1}. Near z = -1 the moments grow like (1 + z)^(1/2 - l): the
+// four-argument form takes 1 + z as computed without cancellation by the caller (a closed
+// form's own expression for it), which the three-argument form computes as 1 + z.
 #pragma once
 
 #include <cmath>
@@ -43,18 +45,18 @@ Scalar positive_series(int j, int l, const Scalar& x, const Ratio& ratio) {
 }
 
 template <typename Scalar>
-Scalar quadratic_moment_series(int j, int l, const Scalar& z) {
+Scalar quadratic_moment_series(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   if (z <= 0) {  // c_k = 1/(2j+2k+1)
     return positive_series(j, l, Scalar(-z), [j](int k) { return Scalar(2 * j + 2 * k - 1) / Scalar(2 * j + 2 * k + 1); });
   }
-  const Scalar y = z / (1 + z);  // c_k = B_{j,k}
+  const Scalar y = z / one_plus_z;  // c_k = B_{j,k}
   return positive_series(j, l, y, [j](int k) { return Scalar(2 * k) / Scalar(2 * j + 2 * k + 1); }) /
-         std::pow(1 + z, l);
+         std::pow(one_plus_z, l);
 }
 
 // I_{0,1}(z), any z > -1.
 template <typename Scalar>
-Scalar atan_ratio(const Scalar& z) {
+Scalar atan_ratio(const Scalar& z, const Scalar& one_plus_z) {
   using std::atan;
   using std::log1p;
   using std::sqrt;
@@ -64,38 +66,45 @@ Scalar atan_ratio(const Scalar& z) {
   }
   const Scalar root = sqrt(-z);
   // atanh(y) = log1p(2y/(1 - y))/2 with 1 - y = (1 + z)/(1 + y), free of cancellation.
-  return log1p(2 * root * (1 + root) / (1 + z)) / (2 * root);
+  return log1p(2 * root * (1 + root) / one_plus_z) / (2 * root);
 }
 
 template <typename Scalar>
-Scalar quadratic_moment_closed(int j, int l, const Scalar& z) {
+Scalar quadratic_moment_closed(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   if (l == 0) return Scalar(1) / Scalar(2 * j + 1);
   if (j == 0) {
-    Scalar moment = atan_ratio(z), power = 1;  // I_{0,1}, (1+z)^(l'-1)
+    Scalar moment = atan_ratio(z, one_plus_z), power = 1;  // I_{0,1}, (1+z)^(l'-1)
     for (int k = 1; k < l; ++k) {
-      power *= 1 + z;
+      power *= one_plus_z;
       moment = Scalar(1) / (Scalar(2 * k) * power) + Scalar(2 * k - 1) / Scalar(2 * k) * moment;
     }
     return moment;
   }
-  return (quadratic_moment_closed(j - 1, l - 1, z) - quadratic_moment_closed(j - 1, l, z)) / z;
+  return (quadratic_moment_closed(j - 1, l - 1, z, one_plus_z) -
+          quadratic_moment_closed(j - 1, l, z, one_plus_z)) / z;
 }
 
 }  // namespace detail
 
-// I_{j,l}(z) for z > -1, j >= 0, l >= 1. Throws std::domain_error naming the argument
-// otherwise.
+// I_{j,l}(z) for z > -1, j >= 0, l >= 1, with one_plus_z = 1 + z. Throws std::domain_error
+// naming the argument otherwise.
 template <typename Scalar>
-Scalar quadratic_moment(int j, int l, const Scalar& z) {
-  if (!(z > -1) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
+Scalar quadratic_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
+  if (!(z > -1) || !(one_plus_z > 0) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
     std::ostringstream os;
     os.precision(17);
     os << "wavecontact::quadratic_moment: j = " << j << ", l = " << l << ", z = "
-       << static_cast<double>(z) << " are invalid (valid: j >= 0, l >= 1, -1 < z finite)";
+       << static_cast<double>(z) << ", 1 + z = " << static_cast<double>(one_plus_z)
+       << " are invalid (valid: j >= 0, l >= 1, -1 < z finite)";
     throw std::domain_error(os.str());
   }
-  return z >= Scalar(-0.75) && z <= Scalar(7) ? detail::quadratic_moment_series(j, l, z)
-                                               : detail::quadratic_moment_closed(j, l, z);
+  return z >= Scalar(-0.75) && z <= Scalar(7) ? detail::quadratic_moment_series(j, l, z, one_plus_z)
+                                               : detail::quadratic_moment_closed(j, l, z, one_plus_z);
+}
+
+template <typename Scalar>
+Scalar quadratic_moment(int j, int l, const Scalar& z) {
+  return quadratic_moment(j, l, z, Scalar(1 + z));
 }
 
 }  // namespace wavecontact

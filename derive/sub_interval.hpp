@@ -1,0 +1,56 @@
+// The engine over part of a contact zone: weighted moments over sub-intervals of
+// [-alpha, alpha], for profiles that change branch inside the zone (the |cos x| of eq. 2
+// at x = b1/2, v = 1).
+//
+//   M_[0,beta][Phi]     = (2/pi) Int_0^beta     Phi(v^2)/sqrt(alpha^2 - v^2) dv,
+//   M_[beta,alpha][Phi] = (2/pi) Int_beta^alpha Phi(v^2)/sqrt(alpha^2 - v^2) dv,
+//
+// together the whole moment M of hilbert.hpp. With v = alpha sin(phi) and T = tan(phi) on
+// [0, beta] (T = cot(phi) on [beta, alpha]) each is (2/pi) Int_0^T0 Psi(T^2) dT for a rational
+// Psi, T0 = beta/sqrt(alpha^2 - beta^2) (its inverse on [beta, alpha]). A Psi whose
+// denominator is c (a + b S)^l in S = T^2 integrates termwise to
+//   Int_0^T0 S^j/(a + b S)^l dT = T0^(2j+1) a^-l I_{j,l}(b T0^2/a),
+// I_{j,l}(z) = Int_0^1 w^(2j)/(1 + z w^2)^l dw (runtime/include/wavecontact/quadratic_moment.hpp),
+// with no coefficient singular where b -> 0 (the pole passing through infinity).
+#pragma once
+
+#include <vector>
+
+#include <ginac/ginac.h>
+
+namespace wavecontact::derive {
+
+// I_{j,l}(z) as quadratic_moment(j, l, z, w), w = 1 + z written without cancellation (the
+// emitted code passes both): a GiNaC function with dI/dz = -l I_{j+1,l+1} (w follows z) and
+// numerical evaluation at GiNaC::Digits (series for |z| <= 1/10, atan or atanh otherwise).
+DECLARE_FUNCTION_4P(quadratic_moment)
+
+// One term c sqrt(r) I_{j,l}(z) of a sub-interval moment (c sqrt(r) alone if l = 0), c, r,
+// z and one_plus_z = 1 + z rational in sym::alpha() and the parameters.
+struct MomentTerm {
+  GiNaC::ex rational, radicand;
+  int j = 0, l = 0;
+  GiNaC::ex z, one_plus_z;
+};
+
+// The same moment where z -> +infinity (the sub-interval reaching the whole): for l > j,
+//   I_{j,l}(z) = K_{j,l} z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z),  K_{j,l} = Int_0^inf s^2j/(1+s^2)^l ds,
+// so that c sqrt(r) z^-(j+1/2), finite where the sub-interval grows to the whole, is one term
+// and the rest is small. Valid for z > 0; the term itself if l <= j or l = 0.
+std::vector<MomentTerm> large_argument_form(const MomentTerm& term);
+
+// The term as an expression.
+GiNaC::ex as_ex(const MomentTerm& term);
+
+// M_[0,beta][Phi] and M_[beta,alpha][Phi] for Phi rational in sym::t() (beta a symbol or a
+// number, 0 < beta < sym::alpha()), as sums of terms. Throws std::invalid_argument if Psi's
+// denominator has more than one factor depending on S.
+std::vector<MomentTerm> inner_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta);
+std::vector<MomentTerm> outer_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta);
+
+// Eq. 6 from the right-hand side g of eq. 5 alone (MATH.md fact 7 in v = tan(x^/2)):
+//   P = 2 pi sqrt(1 + alpha^2) M[v g(v)/(1 + v^2)],
+// so that a piecewise g needs only the moments of its pieces.
+GiNaC::ex load_integrand(const GiNaC::ex& g);
+
+}  // namespace wavecontact::derive

@@ -1,0 +1,133 @@
+// The engine over part of a zone (derive/sub_interval.hpp), at 40 digits:
+// - the moments over [0, beta] and [beta, alpha] add up to the engine's whole moment;
+// - the load from g alone, 2 pi sqrt(1 + alpha^2) M[v g/(1 + v^2)] (MATH.md fact 7), is the
+//   engine's load of the wave curve (eq. 6 applied to the inversion), a <= b1/2;
+// - the large-argument form of a moment equals the moment;
+// - beyond b1/2 the derived load in v-variables equals its angle form, and both forms of it.
+#define BOOST_TEST_MODULE sub_interval
+#include <boost/test/unit_test.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "hilbert.hpp"
+#include "radicals.hpp"
+#include "sub_interval.hpp"
+#include "symbols.hpp"
+#include "waviness.hpp"
+
+using namespace wavecontact::derive;
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+struct Digits {
+  explicit Digits(int digits) : saved(GiNaC::Digits) { GiNaC::Digits = digits; }
+  ~Digits() { GiNaC::Digits = saved; }
+  long saved;
+};
+
+numeric value(const ex& e, const GiNaC::exmap& point) {
+  return GiNaC::ex_to<numeric>(e.subs(point).evalf());
+}
+
+ex sum_of(const std::vector<MomentTerm>& terms) {
+  ex sum = 0;
+  for (const auto& term : terms) sum += as_ex(term);
+  return sum;
+}
+
+std::string text(const numeric& q) {
+  std::ostringstream os;
+  os << q;
+  return os.str();
+}
+
+void check_close(const numeric& got, const numeric& expected, const std::string& what) {
+  const double relative = (GiNaC::abs(got - expected) / GiNaC::abs(expected)).to_double();
+  BOOST_TEST(relative < 1e-35, what << ": " << got << " vs " << expected);
+}
+
+const WavinessDerivation& waviness() {
+  static const WavinessDerivation d = derive_waviness();
+  return d;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(pieces_add_up_to_the_whole_moment) {
+  const Digits digits(40);
+  const ex t = sym::t();
+  // Poles off [0, alpha^2] (a double pole at t = -3, a simple one at t = -2) and a polynomial:
+  // one factor in tan^2(phi) on either piece, as the engine requires.
+  for (const ex& Phi : {ex(t / GiNaC::pow(3 + t, 2)), ex(1 / (2 + t)), ex(t * t + 3)}) {
+    Radicals radicals;
+    const ex whole = weighted_moment(RadicalSum::rational(Phi), radicals).with_roots(radicals);
+    for (const numeric& alpha : {numeric(7, 10), numeric(13, 10)}) {
+      const numeric beta = alpha / 2;
+      const GiNaC::exmap point{{sym::alpha(), alpha}};
+      const ex pieces = sum_of(inner_moment(Phi, beta)) + sum_of(outer_moment(Phi, beta));
+      std::ostringstream what;
+      what << "M[" << Phi << "] at alpha = " << alpha;
+      check_close(value(pieces, point), value(whole, point), what.str());
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(load_from_g_alone_is_the_engines_load) {
+  const Digits digits(40);
+  const WavinessDerivation& d = waviness();
+  Radicals radicals = d.radicals;
+  const ex from_g = 2 * GiNaC::Pi * GiNaC::sqrt(1 + GiNaC::pow(sym::alpha(), 2)) *
+                    weighted_moment(RadicalSum::rational(load_integrand(d.g)), radicals).with_roots(radicals);
+  const ex engine = d.load.with_roots(d.radicals);
+  for (const numeric& m : {numeric(0), numeric(1, 2), numeric(3), numeric(40)}) {
+    for (const numeric& alpha : {numeric(1, 10), numeric(3, 5), numeric(99, 100)}) {
+      const GiNaC::exmap point{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), numeric(3, 2)},
+                               {sym::H1(), numeric(2, 3)}};
+      check_close(value(from_g, point), value(engine, point), "load at m = " + text(m));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(large_argument_form_is_the_moment) {
+  const Digits digits(40);
+  const MomentTerm term{numeric(3, 7), 1 + sym::alpha(), 1, 2, sym::alpha() * 5, 1 + sym::alpha() * 5};
+  for (const numeric& alpha : {numeric(1, 3), numeric(2), numeric(50)}) {
+    const GiNaC::exmap point{{sym::alpha(), alpha}};
+    check_close(value(sum_of(large_argument_form(term)), point), value(as_ex(term), point),
+                "I_{1,2} at z = " + text(5 * alpha));
+  }
+}
+
+// The derived load beyond b1/2: v-form = angle form (a^ = 2 atan(alpha)), near-half form =
+// direct form, and continuity with the closed form below b1/2 at a = b1/2.
+BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
+  const Digits digits(40);
+  const WavinessDerivation& d = waviness();
+  for (const numeric& m : {numeric(0), numeric(1, 5), numeric(1), numeric(7), numeric(300)}) {
+    for (const numeric& alpha : {numeric(1000001, 1000000), numeric(3, 2), numeric(20)}) {
+      const numeric Ca = (1 - alpha * alpha) / (1 + alpha * alpha);
+      const GiNaC::exmap v_point{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
+      const GiNaC::exmap angle_point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
+      const numeric v_form = value(sum_of(d.load_beyond_half_v), v_point);
+      const std::string where = "m = " + text(m) + ", alpha = " + text(alpha);
+      check_close(value(sum_of(d.load_beyond_half_angle), angle_point), v_form, "angle form, " + where);
+      if (value(d.top_piece_argument, angle_point) > 0) {  // where the near-half form holds
+        check_close(value(sum_of(d.load_near_half_angle), angle_point), v_form, "near-half form, " + where);
+        check_close(value(sum_of(d.load_slope_factor_near_half), angle_point),
+                    value(sum_of(d.load_slope_factor_beyond_half), angle_point), "slope forms, " + where);
+      }
+    }
+  }
+  // At a = b1/2 (Ca = 0-) the near-half form joins the closed form below b1/2: they differ by
+  // the flank's part, of order (-Ca)^(3/2).
+  const numeric Ca = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -20)) * -1, m = 3;
+  const GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
+  ex below = 0;
+  for (const auto& term : d.load_angle) below += term.rational * GiNaC::sqrt(term.radicand);
+  const double jump = (GiNaC::abs(value(sum_of(d.load_near_half_angle), point) - value(below, point))).to_double();
+  BOOST_TEST(jump < 1e-27, "load across b1/2: " << jump);
+}
