@@ -257,3 +257,16 @@ BOOST_AUTO_TEST_CASE(roughness_solution_holds_beyond_half_period) {
     BOOST_TEST(contact.roughness_pressure(x) == expected, tt::tolerance(1e-11));
   }
 }
+
+// The closed forms beyond b1/2 carry powers of m up to m^4: for m beyond 1e60 they are taken at
+// 1e60, where m (-cos a^) >= 1e44, so that the load and its slope stay finite and continuous in
+// m up to the largest double.
+BOOST_AUTO_TEST_CASE(flat_punch_limit_beyond_half) {
+  for (double a : {5.0 + 1e-9, 6.0, 9.999}) {
+    const wavecontact::WavinessParams huge{1.0, 10.0, 1e300, 1.0}, large{1.0, 10.0, 1e50, 1.0};
+    BOOST_TEST(std::isfinite(wavecontact::load(huge, a)));
+    BOOST_TEST(std::isfinite(wavecontact::load_slope(huge, a)));
+    BOOST_TEST(wavecontact::load(huge, a) == wavecontact::load(large, a), tt::tolerance(1e-13));
+    BOOST_TEST(wavecontact::load_slope(huge, a) == wavecontact::load_slope(large, a), tt::tolerance(1e-12));
+  }
+}

@@ -90,12 +90,13 @@ Scalar quadratic_moment_closed(int j, int l, const Scalar& z, const Scalar& one_
 // naming the argument otherwise.
 template <typename Scalar>
 Scalar quadratic_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
-  if (!(z > -1) || !(one_plus_z > 0) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
+  // z itself may round to -1 where 1 + z, given apart, does not vanish (m ~ 1e17 and beyond).
+  if (!(z >= -1) || !(one_plus_z > 0) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
     std::ostringstream os;
     os.precision(17);
     os << "wavecontact::quadratic_moment: j = " << j << ", l = " << l << ", z = "
        << static_cast<double>(z) << ", 1 + z = " << static_cast<double>(one_plus_z)
-       << " are invalid (valid: j >= 0, l >= 1, -1 < z finite)";
+       << " are invalid (valid: j >= 0, l >= 1, z >= -1 finite, 1 + z > 0)";
     throw std::domain_error(os.str());
   }
   return z >= Scalar(-0.75) && z <= Scalar(7) ? detail::quadratic_moment_series(j, l, z, one_plus_z)
