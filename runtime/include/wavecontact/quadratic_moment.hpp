@@ -1,9 +1,8 @@
 // The moments I_{j,l}(z) = Int_0^1 w^(2j) / (1 + z w^2)^l dw, z > -1, j >= 0, l >= 1: the
 // transcendental atoms of the engine's integrals over part of a contact zone (derive/
-// sub_interval.hpp), where a profile changes branch (|cos x| at x = b1/2). Every such
-// integral of a rational function of sin^2 phi, phi in [0, phi_1], is a sum of
-//   T^(2j+1) s^(-l) I_{j,l}(T^2/s),  T = tan phi_1,
-// over the partial fractions 1/(T^2 + s)^l. In double precision for any z > -1:
+// sub_interval.hpp), where a profile changes branch (|cos x| at x = b1/2). Such an
+// integral, Int_0^T0 N(T^2)/(a + b T^2)^l dT with T = tan(phi), is a sum over the monomials
+// of N of T0^(2j+1) a^-l I_{j,l}(b T0^2/a). In double precision for any z > -1:
 //   -3/4 <= z <= 0: the power series sum_k C(l+k-1, k) (-z)^k/(2j+2k+1), of positive terms;
 //   0 < z <= 7:     with y = z/(1+z) <= 7/8, 1 + z w^2 = (1+z)(1 - y(1 - w^2)), the series
 //                   (1+z)^-l sum_k C(l+k-1, k) y^k B_{j,k}, B_{j,k} = Int_0^1 w^(2j)(1-w^2)^k dw
