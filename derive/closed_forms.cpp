@@ -21,17 +21,12 @@ std::vector<RootTerm> scaled(std::vector<RootTerm> terms, const ex& factor) {
   return terms;
 }
 
-namespace {
-
-// dF/dSa - dF/dCa of one term c sqrt(r): [(Dc r + c Dr / 2) / r] sqrt(r).
 RootTerm slope_factor(const RootTerm& term) {
   auto D = [](const ex& e) { return e.diff(sym::Sa()) - e.diff(sym::Ca()); };
   const ex& c = term.rational;
   const ex& r = term.radicand;
   return {((D(c) * r + c * D(r) / 2) / r).normal(), r};
 }
-
-}  // namespace
 
 ClosedForms derive_closed_forms(const ex& y, const GiNaC::exmap& sample) {
   return derive_closed_forms(y, split_harmonic_part(in_cosine(y)), sample);

@@ -39,6 +39,10 @@ struct ClosedForms {
 std::vector<RootTerm> in_angles(const std::vector<RootTerm>& v_form,
                                 const GiNaC::exmap& sample = sample_point_v());
 
+// dF/dSa - dF/dCa of one term c sqrt(r): [(Dc r + c Dr / 2) / r] sqrt(r), so that
+// dF/da^ = sin(a^) times it.
+RootTerm slope_factor(const RootTerm& term);
+
 // Every term's rational part multiplied by factor.
 std::vector<RootTerm> scaled(std::vector<RootTerm> terms, const GiNaC::ex& factor);
 

@@ -86,13 +86,6 @@ std::string roughness_manifest(const std::vector<int>& ns) {
 }
 
 
-// The sum of the terms c sqrt(r) I_{j,l}(z).
-ex sum_of(const std::vector<MomentTerm>& terms) {
-  ex sum = 0;
-  for (const MomentTerm& term : terms) sum += as_ex(term);
-  return sum;
-}
-
 // Manifest lines per term c sqrt(r) I_{j,l}(z): rational, radicand, and j, l, z, 1 + z.
 void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms) {
   for (std::size_t i = 0; i < terms.size(); ++i) {
@@ -132,10 +125,10 @@ std::string waviness_header(const WavinessDerivation& d) {
        "Load per unit length P (eq. 6) for b1/2 < a < b1, where the zone reaches the |cos|\n"
        "branch of eq. 2: the sub-interval moments of both branches (derive/sub_interval.hpp),\n"
        "I_{j,l} from wavecontact/quadratic_moment.hpp.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_beyond_half_angle)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_beyond_half_angle)},
       {"waviness_load_slope_factor_beyond_half",
        "dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_slope_factor_beyond_half)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_beyond_half)},
       {"waviness_top_piece_argument",
        "z of the top piece's I_{j,l} beyond b1/2: where it is >= 1 (towards b1/2, where it grows\n"
        "without bound) the near_half forms below hold the digits, elsewhere the beyond_half ones.",
@@ -143,10 +136,10 @@ std::string waviness_header(const WavinessDerivation& d) {
       {"waviness_load_near_half",
        "waviness_load_beyond_half with the top piece in its large-argument form (I_{j,l}(z) =\n"
        "K z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z)): for waviness_top_piece_argument >= 1.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_near_half_angle)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_near_half_angle)},
       {"waviness_load_slope_factor_near_half",
        "dP/dSa - dP/dCa of waviness_load_near_half.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, sum_of(d.load_slope_factor_near_half)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_near_half)},
       {"waviness_height",
        "The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).",
        {sym::H1(), sym::m(), sym::Cx()}, d.height},

@@ -117,6 +117,12 @@ ex as_ex(const MomentTerm& term) {
   return term.l == 0 ? factor : factor * quadratic_moment(term.j, term.l, term.z, term.one_plus_z);
 }
 
+ex as_ex(const std::vector<MomentTerm>& terms) {
+  ex sum = 0;
+  for (const MomentTerm& term : terms) sum += as_ex(term);
+  return sum;
+}
+
 std::vector<MomentTerm> large_argument_form(const MomentTerm& term) {
   if (term.l == 0 || term.l <= term.j) return {term};
   const int j = term.j, l = term.l;

@@ -39,8 +39,9 @@ struct MomentTerm {
 // and the rest is small. Valid for z > 0; the term itself if l <= j or l = 0.
 std::vector<MomentTerm> large_argument_form(const MomentTerm& term);
 
-// The term as an expression.
+// The term as an expression, and the sum of terms.
 GiNaC::ex as_ex(const MomentTerm& term);
+GiNaC::ex as_ex(const std::vector<MomentTerm>& terms);
 
 // M_[0,beta][Phi] and M_[beta,alpha][Phi] for Phi rational in sym::t() (beta a symbol or a
 // number, 0 < beta < sym::alpha()), as sums of terms. Throws std::invalid_argument if Psi's

@@ -45,16 +45,15 @@ MomentTerm moment_in_angles(const MomentTerm& term, const GiNaC::exmap& sample) 
           in_zone_cosine(term.one_plus_z)};
 }
 
-// dF/dSa - dF/dCa of c sqrt(r) I_{j,l}(z): the factor's derivative times I, plus
-// c sqrt(r) (-l I_{j+1,l+1}(z)) dz (two terms, both c' sqrt(r) I).
-std::vector<MomentTerm> slope_factor(const MomentTerm& term) {
-  auto D = [](const ex& e) { return e.diff(sym::Sa()) - e.diff(sym::Ca()); };
-  const ex& c = term.rational;
-  const ex& r = term.radicand;
-  std::vector<MomentTerm> terms{
-      {((D(c) * r + c * D(r) / 2) / r).normal(), r, term.j, term.l, term.z, term.one_plus_z}};
+// dF/dSa - dF/dCa of c sqrt(r) I_{j,l}(z): the factor's (closed_forms.hpp) times I, plus
+// c sqrt(r) (-l I_{j+1,l+1}(z)) dz.
+std::vector<MomentTerm> moment_slope_factor(const MomentTerm& term) {
+  const RootTerm factor = slope_factor({term.rational, term.radicand});
+  std::vector<MomentTerm> terms{{factor.rational, factor.radicand, term.j, term.l, term.z, term.one_plus_z}};
   if (term.l > 0) {
-    terms.push_back({(-term.l * c * D(term.z)).normal(), r, term.j + 1, term.l + 1, term.z, term.one_plus_z});
+    const ex Dz = term.z.diff(sym::Sa()) - term.z.diff(sym::Ca());
+    terms.push_back({(-term.l * term.rational * Dz).normal(), term.radicand, term.j + 1, term.l + 1,
+                     term.z, term.one_plus_z});
   }
   return terms;
 }
@@ -88,10 +87,10 @@ void derive_beyond_half(WavinessDerivation& d) {
   for (const MomentTerm& term : d.load_beyond_half_v) d.load_beyond_half_angle.push_back(moment_in_angles(term, sample));
   for (const MomentTerm& term : near_half) d.load_near_half_angle.push_back(moment_in_angles(term, sample));
   for (const MomentTerm& term : d.load_beyond_half_angle) {
-    for (const MomentTerm& part : slope_factor(term)) d.load_slope_factor_beyond_half.push_back(part);
+    for (const MomentTerm& part : moment_slope_factor(term)) d.load_slope_factor_beyond_half.push_back(part);
   }
   for (const MomentTerm& term : d.load_near_half_angle) {
-    for (const MomentTerm& part : slope_factor(term)) d.load_slope_factor_near_half.push_back(part);
+    for (const MomentTerm& part : moment_slope_factor(term)) d.load_slope_factor_near_half.push_back(part);
   }
   d.top_piece_argument = in_zone_cosine(top.front().z);
 }

@@ -146,9 +146,7 @@ GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTer
   const GiNaC::numeric Ca = GiNaC::cos(GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * exact(p.a) / exact(p.b1)).evalf()));
   GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::E(), exact(p.E)},
                      {sym::H1(), exact(p.H1)}, {sym::m(), exact(p.m)}};
-  GiNaC::ex sum = 0;
-  for (const auto& term : terms) sum += wavecontact::derive::as_ex(term);
-  return GiNaC::ex_to<GiNaC::numeric>(sum.subs(point).evalf());
+  return GiNaC::ex_to<GiNaC::numeric>(wavecontact::derive::as_ex(terms).subs(point).evalf());
 }
 
 }  // namespace

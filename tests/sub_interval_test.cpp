@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "emit_common.hpp"
 #include "hilbert.hpp"
 #include "radicals.hpp"
 #include "sub_interval.hpp"
@@ -31,12 +32,6 @@ struct Digits {
 
 numeric value(const ex& e, const GiNaC::exmap& point) {
   return GiNaC::ex_to<numeric>(e.subs(point).evalf());
-}
-
-ex sum_of(const std::vector<MomentTerm>& terms) {
-  ex sum = 0;
-  for (const auto& term : terms) sum += as_ex(term);
-  return sum;
 }
 
 std::string text(const numeric& q) {
@@ -68,7 +63,7 @@ BOOST_AUTO_TEST_CASE(pieces_add_up_to_the_whole_moment) {
     for (const numeric& alpha : {numeric(7, 10), numeric(13, 10)}) {
       const numeric beta = alpha / 2;
       const GiNaC::exmap point{{sym::alpha(), alpha}};
-      const ex pieces = sum_of(inner_moment(Phi, beta)) + sum_of(outer_moment(Phi, beta));
+      const ex pieces = as_ex(inner_moment(Phi, beta)) + as_ex(outer_moment(Phi, beta));
       std::ostringstream what;
       what << "M[" << Phi << "] at alpha = " << alpha;
       check_close(value(pieces, point), value(whole, point), what.str());
@@ -97,7 +92,7 @@ BOOST_AUTO_TEST_CASE(large_argument_form_is_the_moment) {
   const MomentTerm term{numeric(3, 7), 1 + sym::alpha(), 1, 2, sym::alpha() * 5, 1 + sym::alpha() * 5};
   for (const numeric& alpha : {numeric(1, 3), numeric(2), numeric(50)}) {
     const GiNaC::exmap point{{sym::alpha(), alpha}};
-    check_close(value(sum_of(large_argument_form(term)), point), value(as_ex(term), point),
+    check_close(value(as_ex(large_argument_form(term)), point), value(as_ex(term), point),
                 "I_{1,2} at z = " + text(5 * alpha));
   }
 }
@@ -112,13 +107,13 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
       const numeric Ca = (1 - alpha * alpha) / (1 + alpha * alpha);
       const GiNaC::exmap v_point{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
       const GiNaC::exmap angle_point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
-      const numeric v_form = value(sum_of(d.load_beyond_half_v), v_point);
+      const numeric v_form = value(as_ex(d.load_beyond_half_v), v_point);
       const std::string where = "m = " + text(m) + ", alpha = " + text(alpha);
-      check_close(value(sum_of(d.load_beyond_half_angle), angle_point), v_form, "angle form, " + where);
+      check_close(value(as_ex(d.load_beyond_half_angle), angle_point), v_form, "angle form, " + where);
       if (value(d.top_piece_argument, angle_point) > 0) {  // where the near-half form holds
-        check_close(value(sum_of(d.load_near_half_angle), angle_point), v_form, "near-half form, " + where);
-        check_close(value(sum_of(d.load_slope_factor_near_half), angle_point),
-                    value(sum_of(d.load_slope_factor_beyond_half), angle_point), "slope forms, " + where);
+        check_close(value(as_ex(d.load_near_half_angle), angle_point), v_form, "near-half form, " + where);
+        check_close(value(as_ex(d.load_slope_factor_near_half), angle_point),
+                    value(as_ex(d.load_slope_factor_beyond_half), angle_point), "slope forms, " + where);
       }
     }
   }
@@ -126,8 +121,7 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
   // the flank's part, of order (-Ca)^(3/2).
   const numeric Ca = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -20)) * -1, m = 3;
   const GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
-  ex below = 0;
-  for (const auto& term : d.load_angle) below += term.rational * GiNaC::sqrt(term.radicand);
-  const double jump = (GiNaC::abs(value(sum_of(d.load_near_half_angle), point) - value(below, point))).to_double();
+  const ex below = single_term(d.load_angle);
+  const double jump = (GiNaC::abs(value(as_ex(d.load_near_half_angle), point) - value(below, point))).to_double();
   BOOST_TEST(jump < 1e-27, "load across b1/2: " << jump);
 }
