@@ -127,19 +127,22 @@ std::string waviness_header(const WavinessDerivation& d) {
        "I_{j,l} from wavecontact/quadratic_moment.hpp.",
        {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_beyond_half_angle)},
       {"waviness_load_slope_factor_beyond_half",
-       "dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.",
+       "dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.\n"
+       "For waviness_top_piece_argument < 0 (its terms cancel as a -> b1/2+).",
        {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_beyond_half)},
+      {"waviness_load_slope_factor_by_parts",
+       "The same slope factor from the moments of (1 + v^2) g' + v g (no end point differentiated):\n"
+       "for waviness_top_piece_argument >= 0 (its pieces cancel as m (-cos(pi a/b1)) grows).",
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_by_parts)},
       {"waviness_top_piece_argument",
-       "z of the top piece's I_{j,l} beyond b1/2: where it is >= 1 (towards b1/2, where it grows\n"
-       "without bound) the near_half forms below hold the digits, elsewhere the beyond_half ones.",
+       "z of the top piece's I_{j,l} beyond b1/2 (it grows without bound towards b1/2): it selects\n"
+       "the forms that hold the digits, waviness_load_near_half where z >= 1 and\n"
+       "waviness_load_slope_factor_by_parts where z >= 0.",
        {sym::m(), sym::Ca(), sym::Sa()}, d.top_piece_argument},
       {"waviness_load_near_half",
        "waviness_load_beyond_half with the top piece in its large-argument form (I_{j,l}(z) =\n"
        "K z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z)): for waviness_top_piece_argument >= 1.",
        {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_near_half_angle)},
-      {"waviness_load_slope_factor_near_half",
-       "dP/dSa - dP/dCa of waviness_load_near_half.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_near_half)},
       {"waviness_height",
        "The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).",
        {sym::H1(), sym::m(), sym::Cx()}, d.height},
@@ -193,8 +196,9 @@ std::string manifest(const WavinessDerivation& d) {
   write_moment_terms(os, "waviness.load.beyond_half", d.load_beyond_half_v);
   write_moment_terms(os, "waviness.load.beyond_half.angle", d.load_beyond_half_angle);
   write_moment_terms(os, "waviness.load_slope_factor.beyond_half.angle", d.load_slope_factor_beyond_half);
+  write_moment_terms(os, "waviness.load_slope_factor.by_parts", d.load_slope_factor_by_parts_v);
+  write_moment_terms(os, "waviness.load_slope_factor.by_parts.angle", d.load_slope_factor_by_parts);
   write_moment_terms(os, "waviness.load.near_half.angle", d.load_near_half_angle);
-  write_moment_terms(os, "waviness.load_slope_factor.near_half.angle", d.load_slope_factor_near_half);
   os << "waviness.top_piece_argument = " << canonical_rational(d.top_piece_argument) << "\n";
   os << "waviness.height = " << canonical_rational(d.height) << "\n";
   os << "waviness.height_slope = " << canonical_rational(d.height_slope) << "\n";

@@ -160,4 +160,9 @@ ex load_integrand(const ex& g) {
   return even_in_square(v * g / (1 + v * v), v, sym::t());
 }
 
+ex load_slope_integrand(const ex& g) {
+  const GiNaC::symbol& v = sym::v();
+  return even_in_square(((1 + v * v) * g.diff(v) + v * g).normal(), v, sym::t());
+}
+
 }  // namespace wavecontact::derive

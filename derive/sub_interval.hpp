@@ -54,4 +54,11 @@ std::vector<MomentTerm> outer_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta
 // so that a piecewise g needs only the moments of its pieces.
 GiNaC::ex load_integrand(const GiNaC::ex& g);
 
+// The slope of eq. 6 from g alone: with G = g(v(x^)), integration by parts in MATH.md fact 7
+// (G(0) = 0) gives P = 2 sqrt2 Int_0^a^ sqrt(cos x^ - cos a^) (G/cos(x^/2))' dx^, whose
+// derivative differentiates no end point:
+//   dP/da^ = sin(a^) (pi/2) sqrt(1 + alpha^2) M[(1 + v^2) g'(v) + v g(v)].
+// Returns the integrand in sym::t(); g may have a kink (its pieces' moments add up).
+GiNaC::ex load_slope_integrand(const GiNaC::ex& g);
+
 }  // namespace wavecontact::derive

@@ -45,6 +45,36 @@ MomentTerm moment_in_angles(const MomentTerm& term, const GiNaC::exmap& sample) 
           in_zone_cosine(term.one_plus_z)};
 }
 
+// The two pieces of the zone, [0, 1] on the top branch and [1, alpha] on the flank:
+//   c sqrt(1 + alpha^2) (M_[0,1][top] + M_[1,alpha][flank]), as moment terms of each piece.
+struct PieceMoments {
+  std::vector<MomentTerm> top, flank;
+};
+
+PieceMoments piece_moments(const ex& top, const ex& flank, const ex& c) {
+  const auto scaled = [&c](std::vector<MomentTerm> terms) {
+    for (MomentTerm& term : terms) {
+      term.rational = (c * term.rational).normal();
+      term.radicand = (term.radicand * (1 + GiNaC::pow(sym::alpha(), 2))).normal();
+    }
+    return terms;
+  };
+  return {scaled(inner_moment(top, 1)), scaled(outer_moment(flank, 1))};
+}
+
+std::vector<MomentTerm> both_pieces(const PieceMoments& pieces) {
+  std::vector<MomentTerm> terms = pieces.top;
+  terms.insert(terms.end(), pieces.flank.begin(), pieces.flank.end());
+  return terms;
+}
+
+std::vector<MomentTerm> moments_in_angles(const std::vector<MomentTerm>& terms) {
+  const GiNaC::exmap sample = sample_point_beyond_half();
+  std::vector<MomentTerm> angle;
+  for (const MomentTerm& term : terms) angle.push_back(moment_in_angles(term, sample));
+  return angle;
+}
+
 // dF/dSa - dF/dCa of c sqrt(r) I_{j,l}(z): the factor's (closed_forms.hpp) times I, plus
 // c sqrt(r) (-l I_{j+1,l+1}(z)) dz.
 std::vector<MomentTerm> moment_slope_factor(const MomentTerm& term) {
@@ -58,41 +88,30 @@ std::vector<MomentTerm> moment_slope_factor(const MomentTerm& term) {
   return terms;
 }
 
-// P = 2 pi sqrt(1 + alpha^2) (M_[0,1][Phi_top] + M_[1,alpha][Phi_flank]), as terms.
-std::vector<MomentTerm> load_terms(const std::vector<MomentTerm>& moments) {
-  std::vector<MomentTerm> terms;
-  for (MomentTerm term : moments) {
-    term.rational = (2 * GiNaC::Pi * term.rational).normal();
-    term.radicand = (term.radicand * (1 + GiNaC::pow(sym::alpha(), 2))).normal();
-    terms.push_back(term);
-  }
-  return terms;
-}
-
+// The load by eq. 6 in the form of MATH.md fact 7 (load_integrand). Its slope two ways:
+// - the derivative of the load's terms, whose terms grow like (-cos a^)^(-1/2) as the flank
+//   piece shrinks (a -> b1/2+) and cancel;
+// - by parts (load_slope_integrand), no end point differentiated, whose two pieces carry the
+//   jump of g' at the kink, about m times the result, and cancel where the zone reaches well
+//   beyond the kink (the top piece's argument z < 0).
 void derive_beyond_half(WavinessDerivation& d) {
   const ex m = sym::m(), c = GiNaC::cos(sym::x());
   d.flank_g = hilbert_rhs(sym::H1() * (m + 1) * c / (1 - m * c));
-  const std::vector<MomentTerm> top = load_terms(inner_moment(load_integrand(d.g), 1));
-  const std::vector<MomentTerm> flank = load_terms(outer_moment(load_integrand(d.flank_g), 1));
-  const GiNaC::exmap sample = sample_point_beyond_half();
-  std::vector<MomentTerm> near_half;
-  for (const MomentTerm& term : top) {
-    d.load_beyond_half_v.push_back(term);
-    for (const MomentTerm& part : large_argument_form(term)) near_half.push_back(part);
+  const PieceMoments load = piece_moments(load_integrand(d.g), load_integrand(d.flank_g), 2 * GiNaC::Pi);
+  d.load_beyond_half_v = both_pieces(load);
+  d.load_beyond_half_angle = moments_in_angles(d.load_beyond_half_v);
+  PieceMoments near_half{{}, load.flank};
+  for (const MomentTerm& term : load.top) {
+    for (const MomentTerm& part : large_argument_form(term)) near_half.top.push_back(part);
   }
-  for (const MomentTerm& term : flank) {
-    d.load_beyond_half_v.push_back(term);
-    near_half.push_back(term);
-  }
-  for (const MomentTerm& term : d.load_beyond_half_v) d.load_beyond_half_angle.push_back(moment_in_angles(term, sample));
-  for (const MomentTerm& term : near_half) d.load_near_half_angle.push_back(moment_in_angles(term, sample));
+  d.load_near_half_angle = moments_in_angles(both_pieces(near_half));
   for (const MomentTerm& term : d.load_beyond_half_angle) {
     for (const MomentTerm& part : moment_slope_factor(term)) d.load_slope_factor_beyond_half.push_back(part);
   }
-  for (const MomentTerm& term : d.load_near_half_angle) {
-    for (const MomentTerm& part : moment_slope_factor(term)) d.load_slope_factor_near_half.push_back(part);
-  }
-  d.top_piece_argument = in_zone_cosine(top.front().z);
+  d.load_slope_factor_by_parts_v =
+      both_pieces(piece_moments(load_slope_integrand(d.g), load_slope_integrand(d.flank_g), GiNaC::Pi / 2));
+  d.load_slope_factor_by_parts = moments_in_angles(d.load_slope_factor_by_parts_v);
+  d.top_piece_argument = in_zone_cosine(load.top.front().z);
 }
 
 }  // namespace

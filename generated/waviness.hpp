@@ -86,6 +86,7 @@ inline Scalar waviness_load_beyond_half(const Scalar& E, const Scalar& H1, const
 }
 
 // dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.
+// For waviness_top_piece_argument < 0 (its terms cancel as a -> b1/2+).
 // Total ops: 107 (17 add, 61 mul, 18 div, 2 sqrt, 5 neg, 4 quadratic_moment), 26 temporaries
 template <typename Scalar>
 inline Scalar waviness_load_slope_factor_beyond_half(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
@@ -119,8 +120,47 @@ inline Scalar waviness_load_slope_factor_beyond_half(const Scalar& E, const Scal
   return ((((((((((((_tmp21 * (_tmp22 * _tmp23)) / _tmp20) + (((_tmp8 * (m * _tmp18)) / _tmp3) + ((_tmp8 * _tmp18) / _tmp3))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp16 * (H1 * (E * (_tmp11 * Scalar(2.0))))) / _tmp13)) - ((_tmp16 * (Sa * (H1 * (E * (_tmp11 * Scalar(3.0)))))) / (_tmp12 * _tmp19))) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp14, _tmp15) * (Sa * (H1 * (E * (_tmp11 * Scalar(4.0)))))) / ((_tmp12 * _tmp12) * (Ca * _tmp19)))) - ((_tmp21 * _tmp22) / _tmp20)) - ((_tmp8 * (_tmp23 * _tmp24)) / _tmp3)) - ((_tmp8 * (m * _tmp24)) / _tmp3)) - ((_tmp8 * (_tmp23 * _tmp25)) / _tmp3)) - ((_tmp8 * (m * _tmp25)) / _tmp3);
 }
 
-// z of the top piece's I_{j,l} beyond b1/2: where it is >= 1 (towards b1/2, where it grows
-// without bound) the near_half forms below hold the digits, elsewhere the beyond_half ones.
+// The same slope factor from the moments of (1 + v^2) g' + v g (no end point differentiated):
+// for waviness_top_piece_argument >= 0 (its pieces cancel as m (-cos(pi a/b1)) grows).
+// Total ops: 139 (23 add, 79 mul, 24 div, 2 sqrt, 5 neg, 6 quadratic_moment), 29 temporaries
+template <typename Scalar>
+inline Scalar waviness_load_slope_factor_by_parts(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/) {
+  using std::sqrt;
+  const Scalar _tmp0 = sqrt(-(Scalar(1.0) / Ca));
+  const Scalar _tmp1 = Scalar(1.0) + m;
+  const Scalar _tmp2 = Ca * m;
+  const Scalar _tmp3 = Ca * _tmp1;
+  const Scalar _tmp4 = -((Scalar(1.0) + _tmp2) / _tmp3);
+  const Scalar _tmp5 = Scalar(1.0) - Ca;
+  const Scalar _tmp6 = -(_tmp5 / _tmp3);
+  const Scalar _tmp7 = H1 * (_tmp0 * E);
+  const Scalar _tmp8 = _tmp1 * _tmp1;
+  const Scalar _tmp9 = Ca * Ca;
+  const Scalar _tmp10 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp4, _tmp6);
+  const Scalar _tmp11 = _tmp8 * _tmp9;
+  const Scalar _tmp12 = Scalar(1.0) - _tmp2;
+  const Scalar _tmp13 = _tmp12 * (_tmp12 * _tmp12);
+  const Scalar _tmp14 = sqrt(-Ca);
+  const Scalar _tmp15 = m * m;
+  const Scalar _tmp16 = -((Ca * (Scalar(1.0) - m)) / _tmp12);
+  const Scalar _tmp17 = _tmp5 / _tmp12;
+  const Scalar _tmp18 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp16, _tmp17);
+  const Scalar _tmp19 = H1 * (E * (_tmp9 * _tmp14));
+  const Scalar _tmp20 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp16, _tmp17);
+  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp4, _tmp6);
+  const Scalar _tmp22 = Ca * _tmp8;
+  const Scalar _tmp23 = m * (H1 * (E * (_tmp0 * Scalar(3.0))));
+  const Scalar _tmp24 = _tmp14 * Scalar(3.0);
+  const Scalar _tmp25 = H1 * (E * (Ca * _tmp24));
+  const Scalar _tmp26 = m * _tmp25;
+  const Scalar _tmp27 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp16, _tmp17);
+  const Scalar _tmp28 = H1 * (E * (_tmp9 * _tmp24));
+  return (((((((((((_tmp10 * (m * (H1 * (E * (_tmp0 * Scalar(4.0)))))) / _tmp11) + (((_tmp21 * _tmp23) / _tmp8) + (((_tmp27 * (_tmp15 * (H1 * (E * (Ca * (_tmp14 * Scalar(5.0))))))) / _tmp13) + (((_tmp26 * _tmp27) / _tmp13) + (((_tmp20 * _tmp26) / _tmp13) + (((_tmp20 * (_tmp15 * _tmp25)) / _tmp13) + (((_tmp20 * (H1 * (E * _tmp14))) / _tmp13) + (((_tmp18 * _tmp19) / _tmp13) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp4, _tmp6) * _tmp7) / _tmp1) + ((_tmp7 * _tmp10) / _tmp11)))))))))) - ((_tmp18 * (_tmp15 * _tmp19)) / _tmp13)) - ((_tmp21 * (H1 * (E * (_tmp0 * Scalar(2.0))))) / _tmp22)) - ((_tmp10 * _tmp23) / _tmp22)) - ((_tmp21 * (m * (H1 * (E * (_tmp0 * Scalar(5.0)))))) / _tmp22)) - ((_tmp27 * (H1 * (E * (Ca * (_tmp14 * Scalar(2.0)))))) / _tmp13)) - ((_tmp27 * (_tmp15 * _tmp28)) / _tmp13)) - ((_tmp27 * (m * _tmp28)) / _tmp13)) - ((_tmp20 * (m * (H1 * (E * _tmp24)))) / _tmp13)) - ((_tmp20 * (_tmp15 * (H1 * (E * (_tmp14 * Scalar(4.0)))))) / _tmp13);
+}
+
+// z of the top piece's I_{j,l} beyond b1/2 (it grows without bound towards b1/2): it selects
+// the forms that hold the digits, waviness_load_near_half where z >= 1 and
+// waviness_load_slope_factor_by_parts where z >= 0.
 // Total ops: 6 (2 add, 2 mul, 1 div, 0 sqrt, 1 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar waviness_top_piece_argument(const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/) {
@@ -145,50 +185,6 @@ inline Scalar waviness_load_near_half(const Scalar& E, const Scalar& H1, const S
   const Scalar _tmp8 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp6), _tmp3 / _tmp6);
   const Scalar _tmp9 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
   return ((_tmp8 * _tmp9) / _tmp7) + (((_tmp8 * (m * _tmp9)) / _tmp7) + (((_tmp4 * _tmp5) / _tmp2) + (((Sa * (H1 * (E * (sqrt((m / _tmp1) + (Scalar(1.0) / _tmp1)) * Scalar(1.5707963267948966))))) / _tmp1) + ((_tmp4 * (m * _tmp5)) / _tmp2))));
-}
-
-// dP/dSa - dP/dCa of waviness_load_near_half.
-// Total ops: 173 (29 add, 102 mul, 31 div, 3 sqrt, 4 neg, 4 quadratic_moment), 36 temporaries
-template <typename Scalar>
-inline Scalar waviness_load_slope_factor_near_half(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
-  using std::sqrt;
-  const Scalar _tmp0 = Ca * m;
-  const Scalar _tmp1 = Scalar(1.0) - _tmp0;
-  const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = _tmp1 * _tmp2;
-  const Scalar _tmp4 = sqrt(-Ca);
-  const Scalar _tmp5 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp6 = Scalar(1.0) - Ca;
-  const Scalar _tmp7 = _tmp6 / _tmp1;
-  const Scalar _tmp8 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp5, _tmp7);
-  const Scalar _tmp9 = Sa * (H1 * (_tmp4 * E));
-  const Scalar _tmp10 = Ca * _tmp3;
-  const Scalar _tmp11 = sqrt(-(Scalar(1.0) / Ca));
-  const Scalar _tmp12 = _tmp0 + Scalar(1.0);
-  const Scalar _tmp13 = _tmp12 * _tmp12;
-  const Scalar _tmp14 = _tmp12 * _tmp13;
-  const Scalar _tmp15 = -((Ca * (m + Scalar(1.0))) / _tmp12);
-  const Scalar _tmp16 = _tmp6 / _tmp12;
-  const Scalar _tmp17 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp15, _tmp16);
-  const Scalar _tmp18 = Sa * (H1 * (E * _tmp11));
-  const Scalar _tmp19 = _tmp4 * Scalar(2.0);
-  const Scalar _tmp20 = H1 * (E * _tmp19);
-  const Scalar _tmp21 = _tmp13 * _tmp13;
-  const Scalar _tmp22 = m * m;
-  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp15, _tmp16);
-  const Scalar _tmp24 = Sa * (H1 * (E * (Ca * (_tmp11 * Scalar(4.0)))));
-  const Scalar _tmp25 = _tmp2 * _tmp2;
-  const Scalar _tmp26 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp5, _tmp7);
-  const Scalar _tmp27 = Sa * (H1 * (E * (_tmp4 * Scalar(4.0))));
-  const Scalar _tmp28 = sqrt((m / _tmp12) + (Scalar(1.0) / _tmp12));
-  const Scalar _tmp29 = _tmp28 * Scalar(1.5707963267948966);
-  const Scalar _tmp30 = _tmp11 * Scalar(2.0);
-  const Scalar _tmp31 = H1 * (E * ((Ca * Ca) * _tmp30));
-  const Scalar _tmp32 = H1 * (E * (Ca * _tmp30));
-  const Scalar _tmp33 = H1 * (E * (Ca * _tmp19));
-  const Scalar _tmp34 = Sa * (H1 * (E * (Ca * (_tmp11 * Scalar(3.0)))));
-  const Scalar _tmp35 = Sa * (H1 * (E * (_tmp4 * Scalar(3.0))));
-  return ((((((((((((((_tmp26 * (_tmp22 * _tmp27)) / _tmp25) + (((m * (Sa * (H1 * (E * (_tmp28 * Scalar(2.3561944901923448)))))) / _tmp13) + (((_tmp17 * (m * _tmp34)) / _tmp14) + (((_tmp17 * (_tmp22 * _tmp34)) / _tmp14) + (((_tmp17 * _tmp32) / _tmp14) + (((_tmp17 * (m * _tmp32)) / _tmp14) + (((_tmp17 * (m * _tmp31)) / _tmp14) + (((_tmp17 * (_tmp22 * _tmp31)) / _tmp14) + (((H1 * (E * _tmp29)) / _tmp13) + (((m * (H1 * (E * (Ca * _tmp29)))) / _tmp13) + (((_tmp8 * (m * _tmp20)) / _tmp3) + ((_tmp8 * _tmp20) / _tmp3)))))))))))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp17 * (m * _tmp18)) / _tmp14)) - ((_tmp17 * _tmp18) / _tmp14)) - ((_tmp23 * (_tmp22 * _tmp24)) / _tmp21)) - ((_tmp23 * _tmp24) / _tmp21)) - ((_tmp26 * _tmp27) / _tmp25)) - ((_tmp23 * (m * (Sa * (H1 * (E * (Ca * (_tmp11 * Scalar(8.0)))))))) / _tmp21)) - ((_tmp8 * (_tmp22 * _tmp33)) / _tmp3)) - ((_tmp8 * (m * _tmp33)) / _tmp3)) - ((_tmp8 * (_tmp22 * _tmp35)) / _tmp3)) - ((_tmp8 * (m * _tmp35)) / _tmp3);
 }
 
 // The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).

@@ -154,8 +154,8 @@ GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTer
 // Beyond b1/2 (the zone reaches the |cos| branch of eq. 2): the load, pa/p* and dP/da in
 // closed form (derive/sub_interval.hpp, I_{j,l} in wavecontact/quadratic_moment.hpp) against
 // the same derived forms at 40 digits, over m from 0 to 1e4 and a from just above b1/2 to b1:
-// the load and pa/p* within 64 eps; dP/da within 64 eps but for the cancellation between the
-// two pieces of the zone as a -> b1/2+, bounded by 64 (1 + (-cos a^)^(-1/2)/8) eps.
+// the load, pa/p* and dP/da within 64 eps (dP/da from the moments of (1 + v^2) g' + v g, so
+// that nothing cancels as the flank piece shrinks, a -> b1/2+).
 BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
   wavecontact::test::Precision precision(wavecontact::test::reference_digits);
   const auto& d = waviness();
@@ -178,18 +178,13 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
                                                                    wavecontact::test::exact(b1)).evalf());
         const GiNaC::numeric dPda =
             GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi / wavecontact::test::exact(b1)).evalf()) * GiNaC::sin(angle) * F;
-        const double error = error_in_eps(wavecontact::load_slope(params, p.a), dPda);
-        slope.add(error, p);
-        // Towards b1/2 the two pieces' terms of dP/da grow like (-cos a^)^(-1/2) and cancel.
-        const double growth = 1 / std::sqrt(-std::cos(M_PI * fa));
-        BOOST_TEST(error <= tolerance_eps * (1 + growth / 8),
-                   "dP/da at m = " << m << ", a/b1 = " << fa << ": " << error << " eps");
+        slope.add(error_in_eps(wavecontact::load_slope(params, p.a), dPda), p);
       }
     }
   }
   check(load);
   check(ratio);
-  BOOST_TEST_MESSAGE(slope.summary());
+  check(slope);
 }
 
 BOOST_AUTO_TEST_CASE(inverse_of_load_round_trips) {

@@ -2,6 +2,8 @@
 // - the moments over [0, beta] and [beta, alpha] add up to the engine's whole moment;
 // - the load from g alone, 2 pi sqrt(1 + alpha^2) M[v g/(1 + v^2)] (MATH.md fact 7), is the
 //   engine's load of the wave curve (eq. 6 applied to the inversion), a <= b1/2;
+// - the load's slope from g alone, (pi/2) sqrt(1 + alpha^2) M[(1 + v^2) g' + v g] sin(a^), is
+//   the derivative of the load, within the zone's top branch and beyond b1/2;
 // - the large-argument form of a moment equals the moment;
 // - beyond b1/2 the derived load in v-variables equals its angle form, and both forms of it.
 #define BOOST_TEST_MODULE sub_interval
@@ -50,6 +52,13 @@ const WavinessDerivation& waviness() {
   return d;
 }
 
+// dP/da^ / sin(a^) from the load's derivative in alpha: da^/dalpha = 2/(1 + alpha^2),
+// sin(a^) = 2 alpha/(1 + alpha^2).
+ex slope_factor_of(const ex& load) {
+  const GiNaC::symbol& alpha = sym::alpha();
+  return load.diff(alpha) * GiNaC::pow(1 + alpha * alpha, 2) / (4 * alpha);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(pieces_add_up_to_the_whole_moment) {
@@ -87,6 +96,30 @@ BOOST_AUTO_TEST_CASE(load_from_g_alone_is_the_engines_load) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(load_slope_from_g_alone_is_the_loads_derivative) {
+  const Digits digits(40);
+  const WavinessDerivation& d = waviness();
+  Radicals radicals = d.radicals;
+  const ex whole = GiNaC::Pi / 2 * GiNaC::sqrt(1 + GiNaC::pow(sym::alpha(), 2)) *
+                   weighted_moment(RadicalSum::rational(load_slope_integrand(d.g)), radicals).with_roots(radicals);
+  const ex whole_expected = slope_factor_of(d.load.with_roots(d.radicals));
+  const ex pieces = as_ex(d.load_slope_factor_by_parts_v);
+  const ex pieces_expected = slope_factor_of(as_ex(d.load_beyond_half_v));
+  for (const numeric& m : {numeric(0), numeric(1, 2), numeric(3), numeric(40)}) {
+    const auto at = [&m](const numeric& alpha) {
+      return GiNaC::exmap{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), numeric(3, 2)}, {sym::H1(), numeric(2, 3)}};
+    };
+    for (const numeric& alpha : {numeric(1, 10), numeric(3, 5), numeric(99, 100)}) {
+      check_close(value(whole, at(alpha)), value(whole_expected, at(alpha)),
+                  "dP/da^ at m = " + text(m) + ", alpha = " + text(alpha));
+    }
+    for (const numeric& alpha : {numeric(1000001, 1000000), numeric(3, 2), numeric(20)}) {
+      check_close(value(pieces, at(alpha)), value(pieces_expected, at(alpha)),
+                  "dP/da^ beyond b1/2 at m = " + text(m) + ", alpha = " + text(alpha));
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(large_argument_form_is_the_moment) {
   const Digits digits(40);
   const MomentTerm term{numeric(3, 7), 1 + sym::alpha(), 1, 2, sym::alpha() * 5, 1 + sym::alpha() * 5};
@@ -112,9 +145,9 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
       check_close(value(as_ex(d.load_beyond_half_angle), angle_point), v_form, "angle form, " + where);
       if (value(d.top_piece_argument, angle_point) > 0) {  // where the near-half form holds
         check_close(value(as_ex(d.load_near_half_angle), angle_point), v_form, "near-half form, " + where);
-        check_close(value(as_ex(d.load_slope_factor_near_half), angle_point),
-                    value(as_ex(d.load_slope_factor_beyond_half), angle_point), "slope forms, " + where);
       }
+      check_close(value(as_ex(d.load_slope_factor_by_parts), angle_point),
+                  value(as_ex(d.load_slope_factor_beyond_half), angle_point), "slope forms, " + where);
     }
   }
   // At a = b1/2 (Ca = 0-) the near-half form joins the closed form below b1/2: they differ by

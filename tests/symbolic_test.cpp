@@ -254,7 +254,8 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
   add_moments("waviness.load.beyond_half.angle", d.load_beyond_half_angle);
   add_moments("waviness.load_slope_factor.beyond_half.angle", d.load_slope_factor_beyond_half);
   add_moments("waviness.load.near_half.angle", d.load_near_half_angle);
-  add_moments("waviness.load_slope_factor.near_half.angle", d.load_slope_factor_near_half);
+  add_moments("waviness.load_slope_factor.by_parts", d.load_slope_factor_by_parts_v);
+  add_moments("waviness.load_slope_factor.by_parts.angle", d.load_slope_factor_by_parts);
 
   std::ifstream manifest(WAVECONTACT_SOURCE_DIR "/generated/manifest.txt");
   BOOST_TEST_REQUIRE(manifest.good());

@@ -150,8 +150,9 @@ double load(const WavinessParams& params, double a, Form form) {
 namespace detail {
 
 // Beyond b1/2: the form that holds the digits, by the top piece's argument z (waviness.hpp):
-// the near-half form where z >= 1 for the load (within 3 eps of the 40-digit value either
-// way), where z >= 4 for its slope, whose terms cancel more (tests/accuracy_test.cpp).
+// for the load the near-half form where z >= 1 (within 3 eps of the 40-digit value either
+// way); for its slope the form by parts where z >= 0, the derivative of the load's terms
+// elsewhere (tests/accuracy_test.cpp).
 // The closed forms beyond b1/2 carry powers of m up to m^4, which overflow for m near 1e77.
 // There m enters as m (-Ca) with -Ca >= 1e-16 (a at least an ulp above b1/2), so beyond
 // m = 1e60 the results change by less than 1e-40: they are evaluated at m = 1e60.
@@ -169,8 +170,8 @@ double load_slope_factor(const WavinessParams& params, double a) {
   const double E = params.E, H1 = params.H1, Ca = zone.Ca, Sa = zone.Sa;
   if (a <= params.b1 / 2) return generated::waviness_load_slope_factor(E, H1, params.m, Ca, Sa);
   const double m = std::min(params.m, flat_punch_m);
-  return generated::waviness_top_piece_argument(m, Ca, Sa) >= 4
-             ? generated::waviness_load_slope_factor_near_half(E, H1, m, Ca, Sa)
+  return generated::waviness_top_piece_argument(m, Ca, Sa) >= 0
+             ? generated::waviness_load_slope_factor_by_parts(E, H1, m, Ca, Sa)
              : generated::waviness_load_slope_factor_beyond_half(E, H1, m, Ca, Sa);
 }
 
