@@ -4,8 +4,10 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -228,6 +230,34 @@ BENCHMARK(BM_load);
 // Beyond b1/2: the sub-interval closed forms with I_{j,l}.
 void BM_load_beyond_half(benchmark::State& state) { load_sweep(state, 5.01, 9.9); }
 BENCHMARK(BM_load_beyond_half);
+
+// The pressure beyond b1/2 (a = 0.75 b1), still by quadrature (periodic_regime.hpp): over the
+// zone, and within 1e-2 to 1e-12 (relative) of the kink at x = b1/2, on both sides.
+void pressure_points(benchmark::State& state, const std::vector<double>& xs) {
+  const double a = 7.5;
+  for (auto _ : state) {
+    double sum = 0;
+    for (double x : xs) sum += pressure(waviness, a, x);
+    benchmark::DoNotOptimize(sum);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(xs.size()));
+}
+
+void BM_pressure_beyond_half(benchmark::State& state) {
+  std::vector<double> xs;
+  for (int i = 0; i < 100; ++i) xs.push_back(7.5 * (i + 0.5) / 100);
+  pressure_points(state, xs);
+}
+BENCHMARK(BM_pressure_beyond_half);
+
+void BM_pressure_beyond_half_near_kink(benchmark::State& state) {
+  std::vector<double> xs;
+  for (int k = 2; k <= 12; ++k) {
+    for (double side : {-1.0, 1.0}) xs.push_back(5 * (1 + side * std::pow(10.0, -k)));
+  }
+  pressure_points(state, xs);
+}
+BENCHMARK(BM_pressure_beyond_half_near_kink);
 
 // a(P) in the single-asperity regime (a <= b1/2): the closed-form inverse.
 void BM_single_asperity_half_width(benchmark::State& state) {
