@@ -125,24 +125,24 @@ std::string waviness_header(const WavinessDerivation& d) {
        "Load per unit length P (eq. 6) for b1/2 < a < b1, where the zone reaches the |cos|\n"
        "branch of eq. 2: the sub-interval moments of both branches (derive/sub_interval.hpp),\n"
        "I_{j,l} from wavecontact/quadratic_moment.hpp.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_beyond_half_angle)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.beyond_half.load_angle)},
       {"waviness_load_slope_factor_beyond_half",
        "dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.\n"
        "For waviness_top_piece_argument < 0 (its terms cancel as a -> b1/2+).",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_beyond_half)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.beyond_half.load_slope_factor)},
       {"waviness_load_slope_factor_by_parts",
        "The same slope factor from the moments of (1 + v^2) g' + v g (no end point differentiated):\n"
        "for waviness_top_piece_argument >= 0 (its pieces cancel as m (-cos(pi a/b1)) grows).",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_slope_factor_by_parts)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.beyond_half.load_slope_factor_by_parts)},
       {"waviness_top_piece_argument",
        "z of the top piece's I_{j,l} beyond b1/2 (it grows without bound towards b1/2): it selects\n"
        "the forms that hold the digits, waviness_load_near_half where z >= 1 and\n"
        "waviness_load_slope_factor_by_parts where z >= 0.",
-       {sym::m(), sym::Ca(), sym::Sa()}, d.top_piece_argument},
+       {sym::m(), sym::Ca(), sym::Sa()}, d.beyond_half.top_piece_argument},
       {"waviness_load_near_half",
        "waviness_load_beyond_half with the top piece in its large-argument form (I_{j,l}(z) =\n"
        "K z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z)): for waviness_top_piece_argument >= 1.",
-       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.load_near_half_angle)},
+       {sym::E(), sym::H1(), sym::m(), sym::Ca(), sym::Sa()}, as_ex(d.beyond_half.load_near_branch_angle)},
       {"waviness_height",
        "The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).",
        {sym::H1(), sym::m(), sym::Cx()}, d.height},
@@ -192,14 +192,14 @@ std::string manifest(const WavinessDerivation& d) {
   write_terms(os, "waviness.load.angle", d.load_angle);
   write_terms(os, "waviness.pa_over_pstar.angle", d.pa_over_pstar_angle);
   write_terms(os, "waviness.load_slope_factor.angle", d.load_slope_factor);
-  os << "waviness.flank.g = " << canonical_rational(d.flank_g) << "\n";
-  write_moment_terms(os, "waviness.load.beyond_half", d.load_beyond_half_v);
-  write_moment_terms(os, "waviness.load.beyond_half.angle", d.load_beyond_half_angle);
-  write_moment_terms(os, "waviness.load_slope_factor.beyond_half.angle", d.load_slope_factor_beyond_half);
-  write_moment_terms(os, "waviness.load_slope_factor.by_parts", d.load_slope_factor_by_parts_v);
-  write_moment_terms(os, "waviness.load_slope_factor.by_parts.angle", d.load_slope_factor_by_parts);
-  write_moment_terms(os, "waviness.load.near_half.angle", d.load_near_half_angle);
-  os << "waviness.top_piece_argument = " << canonical_rational(d.top_piece_argument) << "\n";
+  os << "waviness.flank.g = " << canonical_rational(d.beyond_half.flank_g) << "\n";
+  write_moment_terms(os, "waviness.load.beyond_half", d.beyond_half.load_v);
+  write_moment_terms(os, "waviness.load.beyond_half.angle", d.beyond_half.load_angle);
+  write_moment_terms(os, "waviness.load_slope_factor.beyond_half.angle", d.beyond_half.load_slope_factor);
+  write_moment_terms(os, "waviness.load_slope_factor.by_parts", d.beyond_half.load_slope_factor_by_parts_v);
+  write_moment_terms(os, "waviness.load_slope_factor.by_parts.angle", d.beyond_half.load_slope_factor_by_parts);
+  write_moment_terms(os, "waviness.load.near_half.angle", d.beyond_half.load_near_branch_angle);
+  os << "waviness.top_piece_argument = " << canonical_rational(d.beyond_half.top_piece_argument) << "\n";
   os << "waviness.height = " << canonical_rational(d.height) << "\n";
   os << "waviness.height_slope = " << canonical_rational(d.height_slope) << "\n";
   return os.str();

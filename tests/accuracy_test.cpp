@@ -167,13 +167,13 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
       const auto& [E, H1, b1] = scales[k++ % scales.size()];
       const PhysicalPoint p{E, H1, b1, m, fa * b1, 0};
       const wavecontact::WavinessParams params{H1, b1, m, E};
-      const GiNaC::numeric P = evaluate_moments(d.load_beyond_half_angle, p);
+      const GiNaC::numeric P = evaluate_moments(d.beyond_half.load_angle, p);
       load.add(error_in_eps(wavecontact::load(params, p.a), P), p);
       ratio.add(error_in_eps(wavecontact::pa_over_pstar(params, p.a),
                              P / GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * p.E * p.H1).evalf())),
                 p);
       if (fa < 1) {  // dP/da = (pi/b1) sin(pi a/b1) F vanishes at a = b1
-        const GiNaC::numeric F = evaluate_moments(d.load_slope_factor_beyond_half, p);
+        const GiNaC::numeric F = evaluate_moments(d.beyond_half.load_slope_factor, p);
         const GiNaC::numeric angle = GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * wavecontact::test::exact(p.a) /
                                                                    wavecontact::test::exact(b1)).evalf());
         const GiNaC::numeric dPda =

@@ -103,8 +103,8 @@ BOOST_AUTO_TEST_CASE(load_slope_from_g_alone_is_the_loads_derivative) {
   const ex whole = GiNaC::Pi / 2 * GiNaC::sqrt(1 + GiNaC::pow(sym::alpha(), 2)) *
                    weighted_moment(RadicalSum::rational(load_slope_integrand(d.g)), radicals).with_roots(radicals);
   const ex whole_expected = slope_factor_of(d.load.with_roots(d.radicals));
-  const ex pieces = as_ex(d.load_slope_factor_by_parts_v);
-  const ex pieces_expected = slope_factor_of(as_ex(d.load_beyond_half_v));
+  const ex pieces = as_ex(d.beyond_half.load_slope_factor_by_parts_v);
+  const ex pieces_expected = slope_factor_of(as_ex(d.beyond_half.load_v));
   for (const numeric& m : {numeric(0), numeric(1, 2), numeric(3), numeric(40)}) {
     const auto at = [&m](const numeric& alpha) {
       return GiNaC::exmap{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), numeric(3, 2)}, {sym::H1(), numeric(2, 3)}};
@@ -140,14 +140,14 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
       const numeric Ca = (1 - alpha * alpha) / (1 + alpha * alpha);
       const GiNaC::exmap v_point{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
       const GiNaC::exmap angle_point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
-      const numeric v_form = value(as_ex(d.load_beyond_half_v), v_point);
+      const numeric v_form = value(as_ex(d.beyond_half.load_v), v_point);
       const std::string where = "m = " + text(m) + ", alpha = " + text(alpha);
-      check_close(value(as_ex(d.load_beyond_half_angle), angle_point), v_form, "angle form, " + where);
-      if (value(d.top_piece_argument, angle_point) > 0) {  // where the near-half form holds
-        check_close(value(as_ex(d.load_near_half_angle), angle_point), v_form, "near-half form, " + where);
+      check_close(value(as_ex(d.beyond_half.load_angle), angle_point), v_form, "angle form, " + where);
+      if (value(d.beyond_half.top_piece_argument, angle_point) > 0) {  // where the near-half form holds
+        check_close(value(as_ex(d.beyond_half.load_near_branch_angle), angle_point), v_form, "near-half form, " + where);
       }
-      check_close(value(as_ex(d.load_slope_factor_by_parts), angle_point),
-                  value(as_ex(d.load_slope_factor_beyond_half), angle_point), "slope forms, " + where);
+      check_close(value(as_ex(d.beyond_half.load_slope_factor_by_parts), angle_point),
+                  value(as_ex(d.beyond_half.load_slope_factor), angle_point), "slope forms, " + where);
     }
   }
   // At a = b1/2 (Ca = 0-) the near-half form joins the closed form below b1/2: they differ by
@@ -155,6 +155,6 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
   const numeric Ca = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -20)) * -1, m = 3;
   const GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
   const ex below = single_term(d.load_angle);
-  const double jump = (GiNaC::abs(value(as_ex(d.load_near_half_angle), point) - value(below, point))).to_double();
+  const double jump = (GiNaC::abs(value(as_ex(d.beyond_half.load_near_branch_angle), point) - value(below, point))).to_double();
   BOOST_TEST(jump < 1e-27, "load across b1/2: " << jump);
 }

@@ -236,8 +236,8 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
   add_terms("waviness.load_slope_factor.angle", d.load_slope_factor);
   derived["waviness.height"] = d.height;
   derived["waviness.height_slope"] = d.height_slope;
-  derived["waviness.flank.g"] = d.flank_g;
-  derived["waviness.top_piece_argument"] = d.top_piece_argument;
+  derived["waviness.flank.g"] = d.beyond_half.flank_g;
+  derived["waviness.top_piece_argument"] = d.beyond_half.top_piece_argument;
   auto add_moments = [&](const std::string& name, const std::vector<MomentTerm>& terms) {
     for (std::size_t i = 0; i < terms.size(); ++i) {
       const std::string prefix = name + "[" + std::to_string(i) + "]";
@@ -250,12 +250,12 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
       derived[prefix + ".one_plus_z"] = terms[i].one_plus_z;
     }
   };
-  add_moments("waviness.load.beyond_half", d.load_beyond_half_v);
-  add_moments("waviness.load.beyond_half.angle", d.load_beyond_half_angle);
-  add_moments("waviness.load_slope_factor.beyond_half.angle", d.load_slope_factor_beyond_half);
-  add_moments("waviness.load.near_half.angle", d.load_near_half_angle);
-  add_moments("waviness.load_slope_factor.by_parts", d.load_slope_factor_by_parts_v);
-  add_moments("waviness.load_slope_factor.by_parts.angle", d.load_slope_factor_by_parts);
+  add_moments("waviness.load.beyond_half", d.beyond_half.load_v);
+  add_moments("waviness.load.beyond_half.angle", d.beyond_half.load_angle);
+  add_moments("waviness.load_slope_factor.beyond_half.angle", d.beyond_half.load_slope_factor);
+  add_moments("waviness.load.near_half.angle", d.beyond_half.load_near_branch_angle);
+  add_moments("waviness.load_slope_factor.by_parts", d.beyond_half.load_slope_factor_by_parts_v);
+  add_moments("waviness.load_slope_factor.by_parts.angle", d.beyond_half.load_slope_factor_by_parts);
 
   std::ifstream manifest(WAVECONTACT_SOURCE_DIR "/generated/manifest.txt");
   BOOST_TEST_REQUIRE(manifest.good());
