@@ -73,6 +73,11 @@ std::string canonical_string(const ex& e) {
   return plain(e);
 }
 
+std::string canonical_string(const ex& base, const GiNaC::numeric& exponent) {
+  if (exponent == 1) return canonical_string(base);
+  return wrapped(base) + "^" + wrapped(exponent);
+}
+
 bool leading_term_negative(const ex& sum) {
   std::string leading;
   const ex terms = GiNaC::is_a<GiNaC::add>(sum) ? sum : GiNaC::lst{sum};

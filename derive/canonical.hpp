@@ -17,6 +17,10 @@ namespace wavecontact::derive {
 // strings.
 std::string canonical_string(const GiNaC::ex& e);
 
+// The canonical string of base^exponent, without building the power (which GiNaC may store
+// with the sign of an even power's base flipped).
+std::string canonical_string(const GiNaC::ex& base, const GiNaC::numeric& exponent);
+
 // The operands of a sum or product, sorted by canonical string.
 std::vector<GiNaC::ex> sorted_operands(const GiNaC::ex& e);
 

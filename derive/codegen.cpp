@@ -156,9 +156,10 @@ class Graph {
     ex constants = 1;  // pi and other constants, folded into the coefficient's literal
     bool has_constants = false;
     std::vector<int> numerator, denominator;
-    const std::vector<ex> factors =
-        GiNaC::is_a<GiNaC::mul>(e) ? sorted_operands(e) : std::vector<ex>{e};
-    for (const ex& f : factors) {
+    // Each factor base^exponent with the base's sign fixed (GiNaC may store a factor as -(sum)
+    // in one run and (-sum) in the next), in the order of the fixed factors' canonical strings.
+    std::vector<std::pair<std::string, std::pair<ex, numeric>>> factors;
+    for (const ex& f : GiNaC::is_a<GiNaC::mul>(e) ? std::vector<ex>(e.begin(), e.end()) : std::vector<ex>{e}) {
       if (GiNaC::is_a<numeric>(f)) {
         coefficient *= GiNaC::ex_to<numeric>(f);
         continue;
@@ -178,10 +179,14 @@ class Graph {
       }
       if (GiNaC::is_a<GiNaC::add>(base) && exponent.is_integer() &&
           leading_term_negative(base.expand())) {
-        // GiNaC may store a factor as -(sum) in one run and (-sum) in the next.
         base = (-base).expand();
         if (exponent.is_odd()) coefficient = -coefficient;
       }
+      factors.push_back({canonical_string(base, exponent), {base, exponent}});
+    }
+    std::stable_sort(factors.begin(), factors.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [key, factor] : factors) {
+      const auto& [base, exponent] = factor;
       const int node = power(base, GiNaC::abs(exponent));
       (exponent.is_negative() ? denominator : numerator).push_back(node);
     }
