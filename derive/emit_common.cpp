@@ -42,4 +42,18 @@ void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum,
   }
 }
 
+// Manifest lines per term c sqrt(r) I_{j,l}(z): rational, radicand, and j, l, z, 1 + z.
+void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms) {
+  for (std::size_t i = 0; i < terms.size(); ++i) {
+    const std::string prefix = name + "[" + std::to_string(i) + "]";
+    os << prefix << ".rational = " << canonical_rational(terms[i].rational) << "\n"
+       << prefix << ".radicand = " << canonical_rational(terms[i].radicand) << "\n";
+    if (terms[i].l > 0) {  // the term's factor I_{j,l}(z)
+      os << prefix << ".j = " << terms[i].j << "\n" << prefix << ".l = " << terms[i].l << "\n"
+         << prefix << ".z = " << canonical_rational(terms[i].z) << "\n"
+         << prefix << ".one_plus_z = " << canonical_rational(terms[i].one_plus_z) << "\n";
+    }
+  }
+}
+
 }  // namespace wavecontact::derive

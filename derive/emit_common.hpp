@@ -9,6 +9,7 @@
 
 #include "angle_form.hpp"
 #include "radicals.hpp"
+#include "sub_interval.hpp"
 
 namespace wavecontact::derive {
 
@@ -25,5 +26,8 @@ void write_terms(std::ostream& os, const std::string& name, const std::vector<Ro
 // Manifest lines "name[kappa1*kappa2] = coefficient" per monomial of a sum of radicals.
 void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum,
                const Radicals& radicals);
+
+// Manifest lines per term c sqrt(r) I_{j,l}(z): rational, radicand, and j, l, z, 1 + z.
+void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms);
 
 }  // namespace wavecontact::derive

@@ -218,7 +218,7 @@ const GiNaC::prototype_table& profile_functions() {
   static const GiNaC::prototype_table table = [] {
     GiNaC::prototype_table t;
     const auto& all = GiNaC::get_default_reader();
-    for (const char* name : {"cos", "sin", "sqrt"}) t.insert(*all.find({name, 1}));
+    for (const char* name : {"cos", "sin", "sqrt", "abs"}) t.insert(*all.find({name, 1}));
     return t;
   }();
   return table;
@@ -252,6 +252,7 @@ Degrees degrees(const ex& e, const ex& x) {
     check_coefficient(GiNaC::ex_to<numeric>(e));
     return {};
   }
+  if (is_abs(e)) return degrees(e.op(0), x);  // branches.hpp
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const ex k = (e.op(0) / x).normal();
     if (!GiNaC::is_a<numeric>(k) || !GiNaC::ex_to<numeric>(k).is_integer()) {
@@ -293,7 +294,7 @@ Degrees degrees(const ex& e, const ex& x) {
 
 ex parse_bounded_expression(const std::string& text, const GiNaC::symtab& table) {
   check_text(text, "the expression");
-  const std::string rewritten = Lexer(text, true, {"cos", "sin", "sqrt"}).rewrite();
+  const std::string rewritten = Lexer(text, true, {"cos", "sin", "sqrt", "abs"}).rewrite();
   GiNaC::parser reader(table, true, profile_functions());
   try {
     return reader(rewritten);

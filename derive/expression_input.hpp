@@ -40,12 +40,17 @@ inline constexpr long max_number_bits = 256;  // numerator and denominator of a 
 }  // namespace expression_limits
 
 // Parses a profile y(x) over the symbols in `table` (x and the parameters), with the
-// functions cos and sin only. Refuses an empty or blank text, a text beyond the limits,
+// functions cos, sin and abs only (abs() as branches.hpp allows it). Refuses an empty or blank text, a text beyond the limits,
 // a character other than letters, digits, _, blanks and + - * / ^ ( ) . (every function
 // takes one argument), empty parentheses, an exponent
 // that is not an integer literal within max_power, or a parse error. Decimal literals are
 // read exactly (0.1 is 1/10).
 GiNaC::ex parse_bounded_expression(const std::string& text, const GiNaC::symtab& table);
+
+// Whether e is a call of abs().
+inline bool is_abs(const GiNaC::ex& e) {
+  return GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "abs";
+}
 
 // A --param sample value: a real number (decimal, p/q, or an arithmetic of literals).
 GiNaC::numeric parse_bounded_number(const std::string& text);

@@ -85,21 +85,6 @@ std::string roughness_manifest(const std::vector<int>& ns) {
   return os.str();
 }
 
-
-// Manifest lines per term c sqrt(r) I_{j,l}(z): rational, radicand, and j, l, z, 1 + z.
-void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms) {
-  for (std::size_t i = 0; i < terms.size(); ++i) {
-    const std::string prefix = name + "[" + std::to_string(i) + "]";
-    os << prefix << ".rational = " << canonical_rational(terms[i].rational) << "\n"
-       << prefix << ".radicand = " << canonical_rational(terms[i].radicand) << "\n";
-    if (terms[i].l > 0) {  // the term's factor I_{j,l}(z)
-      os << prefix << ".j = " << terms[i].j << "\n" << prefix << ".l = " << terms[i].l << "\n"
-         << prefix << ".z = " << canonical_rational(terms[i].z) << "\n"
-         << prefix << ".one_plus_z = " << canonical_rational(terms[i].one_plus_z) << "\n";
-    }
-  }
-}
-
 std::string waviness_header(const WavinessDerivation& d) {
   const std::vector<ex> point_arguments{sym::E(),  sym::H1(), sym::b1(), sym::m(), sym::Ca(),
                                         sym::Sa(), sym::Cx(), sym::Sx(), sym::D()};

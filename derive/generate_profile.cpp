@@ -1,5 +1,6 @@
 // The files of a user profile: profile_<name>.hpp (evaluators and the runtime adapter)
 // and profile_<name>_manifest.txt (every derived expression, for regression tests).
+#include <cstdio>
 #include <regex>
 #include <sstream>
 
@@ -126,6 +127,136 @@ std::string harmonic_evaluators(const ProfileDerivation& d, bool rational) {
   return os.str();
 }
 
+// GiNaC::factor of a rational function, made the same on every run (it orders factors and
+// fixes their signs by hash values): each factor expanded with its sign fixed by its
+// canonical leading term.
+ex deterministic_factor(const ex& e) {
+  const ex nd = e.normal().numer_denom();
+  ex result = 1;
+  for (int direction : {1, -1}) {
+    const ex product = GiNaC::factor(nd.op(direction > 0 ? 0 : 1));
+    const std::vector<ex> parts = GiNaC::is_a<GiNaC::mul>(product) ? std::vector<ex>(product.begin(), product.end())
+                                                                   : std::vector<ex>{product};
+    for (const ex& part : parts) {
+      const bool power = GiNaC::is_a<GiNaC::power>(part);
+      ex base = (power ? part.op(0) : part).expand();
+      const long exponent = power ? GiNaC::ex_to<GiNaC::numeric>(part.op(1)).to_long() : 1;
+      if (GiNaC::is_a<GiNaC::add>(base) && leading_term_negative(base)) {
+        base = (-base).expand();
+        if (exponent % 2 != 0) result = -result;
+      }
+      result *= GiNaC::pow(base, direction * exponent);
+    }
+  }
+  return result;
+}
+
+// The evaluators of a profile built with abs() beyond its branch point (beyond_branch.hpp):
+// load and slope factor in their forms and the argument that selects them; g of each branch,
+// its divided difference (g(v) - g(u))/(v - u) with v - u divided out, and the jump
+// g_flank(u) - g_top(u) factored, for the quadrature of eq. 12 across the kink; the flank's
+// height, its slope and its poles.
+std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
+  const std::string& name = d.spec.name;
+  const BeyondBranch& b = d.beyond;
+  const ex v = sym::v(), u = sym::u();
+  const std::vector<ex> load = evaluator_arguments(d).load, height = evaluator_arguments(d).height;
+  const std::vector<ex> argument = with_parameters({}, d, {sym::Ca(), sym::Sa()});
+  const auto divided_difference = [&](const ex& g) {
+    return deterministic_factor((g - g.subs(v == u)) / (v - u));
+  };
+  std::vector<EmittedFunction> functions{
+      {name + "_beyond_branch_load",
+       "Load P (eq. 6) once the zone reaches beyond the branch point: the sub-interval moments of both\n"
+       "branches (derive/sub_interval.hpp), I_{j,l} from wavecontact/quadratic_moment.hpp.",
+       load, as_ex(b.load_angle)},
+      {name + "_near_branch_load",
+       "The same load with the top piece in its large-argument form: for " + name + "_top_piece_argument >= 1.",
+       load, as_ex(b.load_near_branch_angle)},
+      {name + "_top_piece_argument",
+       "z of the top piece's I_{j,l} beyond the branch point (it grows without bound as the edge comes down\n"
+       "to it): selects the forms that hold the digits.",
+       argument, b.top_piece_argument},
+      {name + "_beyond_branch_load_slope_factor",
+       "dP/dSa - dP/dCa of " + name + "_beyond_branch_load, for " + name + "_top_piece_argument < 0.",
+       load, as_ex(b.load_slope_factor)},
+      {name + "_beyond_branch_load_slope_factor_by_parts",
+       "The same from the moments of (1 + v^2) g' + v g (no end point differentiated), for\n" + name +
+           "_top_piece_argument >= 0.",
+       load, as_ex(b.load_slope_factor_by_parts)},
+      {name + "_top_g", "g(v) of eq. 5 on the top branch (|v| < beta).", with_parameters({sym::E()}, d, {v}), b.top_g},
+      {name + "_flank_g", "g(v) of eq. 5 on the flank (|v| > beta).", with_parameters({sym::E()}, d, {v}), b.flank_g},
+      {name + "_top_divided_difference", "(g_top(v) - g_top(u))/(v - u), v - u divided out.",
+       with_parameters({sym::E()}, d, {v, u}), divided_difference(b.top_g)},
+      {name + "_flank_divided_difference", "(g_flank(v) - g_flank(u))/(v - u), v - u divided out.",
+       with_parameters({sym::E()}, d, {v, u}), divided_difference(b.flank_g)},
+      {name + "_branch_jump", "g_flank(u) - g_top(u), factored: it vanishes at u = +-beta without cancellation.",
+       with_parameters({sym::E()}, d, {u}), deterministic_factor((b.flank_g - b.top_g).subs(v == u))},
+      {name + "_flank_height", "The flank's profile in Cx = cos x^ (Cx < the branch point's cosine).", height,
+       d.flank_height},
+      {name + "_flank_height_slope", "dY/dCx on the flank.", height, d.flank_height_slope}};
+  for (std::size_t i = 0; i < d.flank_pole_squares.size(); ++i) {
+    functions.push_back({name + "_flank_pole_square_" + std::to_string(i),
+                         "A pole v^2 of the flank's g; where real and > beta^2 the contact cannot reach it.",
+                         with_parameters({}, d, {}), d.flank_pole_squares[i]});
+  }
+  return functions;
+}
+
+// `  e.<field> = [](const double* q, <signature>) { return <function><double>(<call>); };`
+std::string adapter(const ProfileDerivation& d, const std::string& field, const std::string& signature,
+                    const std::string& function, const std::string& call) {
+  return "  e." + field + " = [](const double* " + (d.parameters.empty() ? "/*q*/" : "q") +
+         (signature.empty() ? "" : ", " + signature) + ") {\n    return " + d.spec.name + "_" + function +
+         "<double>(" + call + ");\n  };\n";
+}
+
+// e.height, e.height_slope: the top's, or for a profile built with abs() the branch of Cx.
+std::string height_adapter(const ProfileDerivation& d, const std::string& field) {
+  const std::string q = parameter_array(d), name = d.spec.name;
+  std::string body = name + "_" + field + "<double>(" + q + "Cx)";
+  if (d.branches.branched) {
+    body = "Cx >= " + double_literal(d.branches.cosine) + " ? " + body + "\n                                  : " +
+           name + "_flank_" + field + "<double>(" + q + "Cx)";
+  }
+  return "  e." + field + " = [](const double* " + (d.parameters.empty() ? "/*q*/" : "q") +
+         ", double Cx) {\n    return " + body + ";\n  };\n";
+}
+
+// The fields of ProfileEvaluator::branch.
+std::string branch_adapters(const ProfileDerivation& d) {
+  const std::string q = parameter_array(d), E = "E, " + q;
+  const std::string load = "double E, double Ca, double Sa";
+  char beta[32];
+  std::snprintf(beta, sizeof beta, "%.17g", GiNaC::ex_to<GiNaC::numeric>(d.branches.beta.evalf()).to_double());
+  std::ostringstream os;
+  os << "  e.branch.cosine = " << double_literal(d.branches.cosine) << ";\n  e.branch.beta = " << beta << ";\n"
+     << adapter(d, "branch.load", load, "beyond_branch_load", E + "Ca, Sa")
+     << adapter(d, "branch.load_near_branch", load, "near_branch_load", E + "Ca, Sa")
+     << adapter(d, "branch.top_piece_argument", "double Ca, double Sa", "top_piece_argument", q + "Ca, Sa")
+     << adapter(d, "branch.load_slope_factor", load, "beyond_branch_load_slope_factor", E + "Ca, Sa")
+     << adapter(d, "branch.load_slope_factor_by_parts", load, "beyond_branch_load_slope_factor_by_parts",
+                E + "Ca, Sa")
+     << adapter(d, "branch.top_g", "double E, double v", "top_g", E + "v")
+     << adapter(d, "branch.flank_g", "double E, double v", "flank_g", E + "v")
+     << adapter(d, "branch.top_divided_difference", "double E, double v, double u", "top_divided_difference",
+                E + "v, u")
+     << adapter(d, "branch.flank_divided_difference", "double E, double v, double u",
+                "flank_divided_difference", E + "v, u")
+     << adapter(d, "branch.jump", "double E, double u", "branch_jump", E + "u")
+     << adapter(d, "branch.flank_height", "double Cx", "flank_height", q + "Cx")
+     << adapter(d, "branch.flank_height_slope", "double Cx", "flank_height_slope", q + "Cx");
+  const bool poles = !d.flank_pole_squares.empty();
+  os << "  e.branch.flank_pole_squares = [](const double* " << (poles && !d.parameters.empty() ? "q" : "/*q*/")
+     << ", double* " << (poles ? "tau" : "/*tau*/") << ") {\n";
+  const std::string args = q.empty() ? "" : q.substr(0, q.size() - 2);
+  for (std::size_t i = 0; i < d.flank_pole_squares.size(); ++i) {
+    os << "    tau[" << i << "] = " << d.spec.name << "_flank_pole_square_" << i << "<double>(" << args << ");\n";
+  }
+  os << "  };\n  e.branch.flank_pole_count = " << d.flank_pole_squares.size() << ";\n";
+  return os.str();
+}
+
 std::string header(const ProfileDerivation& d, const std::string& command) {
   const std::string& name = d.spec.name;
   const ClosedForms& forms = d.forms;
@@ -161,6 +292,9 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
     cosine.outputs = forms.cosine;
     functions.push_back(cosine);
   }
+  if (d.branches.branched) {
+    for (EmittedFunction& f : branch_functions(d)) functions.push_back(std::move(f));
+  }
   for (std::size_t i = 0; i < d.pole_squares.size(); ++i) {
     functions.push_back({name + "_pole_square_" + std::to_string(i),
                          "A pole v^2 = tan^2(x^/2) of g; where real and > 0 the contact "
@@ -185,11 +319,17 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
                     : "it is the whole profile.\n");
   }
   if (rational) os << (harmonic ? "" : ":") << "\n//   g(v) = " << canonical_rational(d.forms.g) << "\n";
+  if (d.branches.branched) {
+    os << "// This is its top branch, for cos x^ >= " << d.branches.cosine << ", where its abs() are "
+       << canonical_string(d.branches.top) << ";\n// beyond, the flank y = " << canonical_string(d.branches.flank)
+       << " (derive/branches.hpp).\n";
+  }
   os << "// Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register "
         "with the runtime:\n//   wavecontact::register_profile(wavecontact::generated::"
      << name << "_profile_evaluator());\n"
      << "#pragma once\n\n#include <cmath>\n\n"
      << (harmonic ? "#include \"wavecontact/harmonic_series.hpp\"\n" : "")
+     << (d.branches.branched ? "#include \"wavecontact/quadratic_moment.hpp\"\n" : "")
      << "#include \"wavecontact/profile.hpp\"\n\n"
         "namespace wavecontact::generated {\n";
   for (const auto& f : functions) os << "\n" << emit_function(f);
@@ -213,10 +353,7 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
      << "  e.load_slope_factor = [](const double* " << unused
      << ", double E, double Ca, double Sa) {\n"
      << "    return " << name << "_load_slope_factor<double>(E, " << q << "Ca, Sa);\n  };\n"
-     << "  e.height = [](const double* " << unused << ", double Cx) {\n"
-     << "    return " << name << "_height<double>(" << q << "Cx);\n  };\n"
-     << "  e.height_slope = [](const double* " << unused << ", double Cx) {\n"
-     << "    return " << name << "_height_slope<double>(" << q << "Cx);\n  };\n"
+     << height_adapter(d, "height") << height_adapter(d, "height_slope")
      << "  e.harmonic = " << d.forms.harmonic << ";\n"
      << "  e.pole_squares = [](const double* " << (d.pole_squares.empty() ? "/*q*/" : unused)
      << ", double* " << (d.pole_squares.empty() ? "/*tau*/" : "tau") << ") {\n";
@@ -225,7 +362,8 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
     os << "    tau[" << i << "] = " << name << "_pole_square_" << i << "<double>(" << args
        << ");\n";
   }
-  os << "  };\n  e.pole_count = " << d.pole_squares.size() << ";\n  return e;\n}\n"
+  os << "  };\n  e.pole_count = " << d.pole_squares.size() << ";\n"
+     << (d.branches.branched ? branch_adapters(d) : "") << "  return e;\n}\n"
      << "\n}  // namespace wavecontact::generated\n";
   return os.str();
 }
@@ -258,6 +396,24 @@ std::string manifest(const ProfileDerivation& d, const std::string& command) {
   os << "profile.height = " << canonical_rational(d.forms.height) << "\n";
   os << "profile.height_slope = " << canonical_rational(d.forms.height_slope) << "\n";
   os << "profile.harmonic = " << d.forms.harmonic << "\n";
+  if (d.branches.branched) {
+    const BeyondBranch& b = d.beyond;
+    os << "branch.cosine = " << d.branches.cosine << "\n"
+       << "branch.top = " << canonical_string(d.branches.top) << "\n"
+       << "branch.flank = " << canonical_string(d.branches.flank) << "\n"
+       << "branch.flank.g = " << canonical_rational(b.flank_g) << "\n"
+       << "branch.flank.height = " << canonical_rational(d.flank_height) << "\n";
+    for (std::size_t i = 0; i < d.flank_pole_squares.size(); ++i) {
+      os << "branch.flank.pole[" << i << "] = " << canonical_rational(d.flank_pole_squares[i]) << "\n";
+    }
+    write_moment_terms(os, "branch.load", b.load_v);
+    write_moment_terms(os, "branch.load.angle", b.load_angle);
+    write_moment_terms(os, "branch.load.near_branch.angle", b.load_near_branch_angle);
+    write_moment_terms(os, "branch.load_slope_factor.angle", b.load_slope_factor);
+    write_moment_terms(os, "branch.load_slope_factor.by_parts", b.load_slope_factor_by_parts_v);
+    write_moment_terms(os, "branch.load_slope_factor.by_parts.angle", b.load_slope_factor_by_parts);
+    os << "branch.top_piece_argument = " << canonical_rational(b.top_piece_argument) << "\n";
+  }
   return os.str();
 }
 
@@ -265,7 +421,7 @@ std::string manifest(const ProfileDerivation& d, const std::string& command) {
 
 std::vector<ProfileSpec> example_profiles() {
   return {
-      {"parametric_wave_curve", "H1*(m+1)*cos(x)/(m*cos(x)+1)", {{"H1", 1}, {"m", GiNaC::numeric(1, 2)}}},
+      {"parametric_wave_curve", "H1*(m+1)*cos(x)/(m*abs(cos(x))+1)", {{"H1", 1}, {"m", GiNaC::numeric(1, 2)}}},
       {"two_harmonic", "H1*cos(x)+H3*cos(3*x)", {{"H1", 1}, {"H3", GiNaC::numeric(1, 10)}}},
   };
 }

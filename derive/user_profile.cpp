@@ -9,6 +9,8 @@
 
 #include "block_keer.hpp"
 #include "expression_input.hpp"
+#include "hilbert.hpp"
+#include "sub_interval.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -86,9 +88,11 @@ void check_whole_order(const ProfileSpec& spec, const ex& Y) {
   }
 }
 
-// A parameter-free pole of the profile at cos x = c0 in [-1, 1] (refused before the engine
-// meets it: at x = 0 it is a pole at v^2 = 0, where the moments divide by zero).
-void check_poles_off_the_period(const ProfileSpec& spec, const ex& R) {
+// A parameter-free pole of the profile at cos x = c0 in [lo, hi], the part of [-1, 1] where
+// the branch R holds (refused before the engine meets it: at x = 0 it is a pole at v^2 = 0,
+// where the moments divide by zero).
+void check_poles_off_the_period(const ProfileSpec& spec, const ex& R, const numeric& lo = -1,
+                                const numeric& hi = 1) {
   const GiNaC::symbol& c = sym::Cx();
   const ex denominator = GiNaC::factor(R.normal().denom());
   const std::vector<ex> factors = GiNaC::is_a<GiNaC::mul>(denominator)
@@ -100,7 +104,7 @@ void check_poles_off_the_period(const ProfileSpec& spec, const ex& R) {
     const ex root = (-factor.coeff(c, 0) / factor.coeff(c, 1)).normal();
     if (!GiNaC::is_a<numeric>(root) || !GiNaC::ex_to<numeric>(root).is_real()) continue;
     const numeric c0 = GiNaC::ex_to<numeric>(root);
-    if (c0 < -1 || c0 > 1) continue;
+    if (c0 < lo || c0 > hi) continue;
     std::ostringstream os;
     os.precision(17);
     os << "the profile has a pole at cos x = " << c0;
@@ -110,6 +114,52 @@ void check_poles_off_the_period(const ProfileSpec& spec, const ex& R) {
           "bounded solution";
     refuse(spec, os.str());
   }
+}
+
+// The poles tau = v^2 of the odd rational g that depend on the parameters.
+std::vector<ex> parameter_pole_squares(const ex& g, const std::vector<GiNaC::realsymbol>& parameters) {
+  const GiNaC::symbol& t = sym::t();
+  const ex denominator = GiNaC::factor(even_in_square(g.normal().denom(), sym::v(), t));
+  const std::vector<ex> factors = GiNaC::is_a<GiNaC::mul>(denominator)
+                                      ? std::vector<ex>(denominator.begin(), denominator.end())
+                                      : std::vector<ex>{denominator};
+  std::vector<ex> poles;
+  for (const ex& factor_power : factors) {
+    const ex factor = GiNaC::is_a<GiNaC::power>(factor_power) ? factor_power.op(0) : factor_power;
+    if (factor.degree(t) != 1) continue;
+    const ex tau = (-factor.coeff(t, 0) / factor.coeff(t, 1)).normal();
+    bool parametric = false;
+    for (const auto& p : parameters) parametric = parametric || tau.has(p);
+    if (parametric) poles.push_back(tau);
+  }
+  return poles;
+}
+
+// The branches of a profile built with abs() must meet with the same slope (g continuous at
+// beta): a corner makes the pressure log-singular, beyond what the forms and the runtime's
+// quadrature assume.
+void check_slopes_meet(const ProfileSpec& spec, const BranchSplit& branches) {
+  const ex jump = hilbert_rhs(branches.top) - hilbert_rhs(branches.flank);
+  if (jump.subs(sym::v() == branches.beta).normal().is_zero()) return;
+  std::ostringstream os;
+  os << "its slope jumps at cos x = " << branches.cosine
+     << ", where an abs() argument changes sign (a corner, under which the contact pressure is "
+        "log-singular): the engine joins branches whose slopes meet, as in eq. 2, where |cos x| "
+        "multiplies cos x";
+  refuse(spec, os.str());
+}
+
+// The flank of a profile built with abs(): its height, its parameter-free poles (checked on
+// cos x^ <= the branch's cosine), and the load and slope beyond the branch point.
+void derive_flank(const ProfileSpec& spec, ProfileDerivation& d) {
+  const BranchSplit& branches = d.branches;
+  const ex flank = in_cosine(branches.flank);
+  check_poles_off_the_period(spec, flank, -1, branches.cosine);
+  d.flank_height = flank;
+  d.flank_height_slope = flank.diff(sym::Cx()).normal();
+  const ex flank_g = hilbert_rhs(branches.flank), top_g = hilbert_rhs(branches.top);
+  d.flank_pole_squares = parameter_pole_squares(flank_g, d.parameters);
+  d.beyond = derive_beyond_branch(top_g, flank_g, branches.beta, d.sample);
 }
 
 ex parse(const ProfileSpec& spec, const std::vector<GiNaC::realsymbol>& parameters) {
@@ -149,8 +199,14 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
     d.parameters.emplace_back(p.name);
     d.sample[d.parameters.back()] = p.sample;
   }
-  const ex y = parse(spec, d.parameters);
-  if (!y.has(sym::x())) refuse(spec, "it does not depend on x");
+  const ex written = parse(spec, d.parameters);
+  if (!written.has(sym::x())) refuse(spec, "it does not depend on x");
+  try {
+    d.branches = split_branches(written);
+  } catch (const InputRefused& e) {
+    refuse(spec, e.what());
+  }
+  const ex& y = d.branches.top;
   ex power;
   if (find_non_integer_power(y, power)) {
     refuse(spec, str(power) + " is a non-integer power: the profile must be rational in "
@@ -167,10 +223,12 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
                  "on x = 0, a top of the profile");
   }
   try {
+    if (d.branches.branched) check_slopes_meet(spec, d.branches);
     const HarmonicSplit parts = split_harmonic_part(in_cosine(y));
     if (parts.cosine.empty()) check_whole_order(spec, parts.rational);
-    check_poles_off_the_period(spec, parts.rational);
+    check_poles_off_the_period(spec, parts.rational, d.branches.branched ? d.branches.cosine : numeric(-1));
     d.forms = derive_closed_forms(y, parts, d.sample);
+    if (d.branches.branched) derive_flank(spec, d);
   } catch (const InputRefused&) {
     throw;
   } catch (const std::invalid_argument& e) {

@@ -2,7 +2,9 @@
 //
 // EXPR is the profile y(x) over one period 2 pi of the normalised coordinate x = pi x/b1,
 // in GiNaC syntax, with the symbol x and the named parameters; rational in cos(k x) and
-// sin(k x) for integer k. The contact zone |x| < a is centred on x = 0, so y must be even.
+// sin(k x) for integer k, and in abs() of parameter-free expressions in cos(k x) whose signs
+// change at one point of 0 < x < pi at most (branches.hpp), where the slope of y stays
+// continuous, as in eq. 2. The contact zone |x| < a is centred on x = 0, so y must be even.
 // The Block-Keer change of variables turns it into g(v), which must be odd and rational
 // with poles, in t = v^2, at roots of factors linear in t; the engine (hilbert.hpp) then
 // gives the pressure and the load in closed form, as for the built-in wave curve.
@@ -13,6 +15,8 @@
 
 #include <ginac/ginac.h>
 
+#include "beyond_branch.hpp"
+#include "branches.hpp"
 #include "closed_forms.hpp"
 
 namespace wavecontact::derive {
@@ -39,13 +43,24 @@ struct ProfileDerivation {
   // The poles tau_i of g in t = v^2 that depend on the parameters: where real and > 0 they
   // bound the contact, x^ < 2 atan(sqrt(tau_i)). Parameter-free poles are checked here.
   std::vector<GiNaC::ex> pole_squares;
+  // A profile built with abs() (branches.hpp): `forms` are those of its top branch, which
+  // hold while the zone stays short of the sign change at v = branches.beta; beyond it the
+  // load and its slope are `beyond`'s, and the pressure the quadrature of eq. 12 over both
+  // branches' g (runtime). The flank's height in Cx and its parameter-dependent poles in v^2,
+  // which bound the contact where they lie beyond beta (the top's where they lie short of it).
+  BranchSplit branches;
+  BeyondBranch beyond;
+  GiNaC::ex flank_height, flank_height_slope;
+  std::vector<GiNaC::ex> flank_pole_squares;
 };
 
 // Parses, checks and derives. Throws std::invalid_argument with the reason and the place
 // when the name, a parameter or the expression is not acceptable: a parse error, a symbol
 // that is not declared, a term not rational in cos(k x), sin(k x), a profile that is not
 // even, a denominator the engine cannot factor into poles linear in v^2, or a pole of the
-// profile on the real period (parameter-free) where the contact can reach it.
+// profile on the real period (parameter-free) where the contact can reach it, an abs() that
+// branches.hpp refuses, or a profile whose moments beyond its branch point have more than
+// one pole factor in v^2 (sub_interval.hpp), or whose slope jumps at its branch point.
 ProfileDerivation derive_profile(const ProfileSpec& spec);
 
 }  // namespace wavecontact::derive

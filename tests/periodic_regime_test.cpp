@@ -11,6 +11,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
+#include "kinked_reference.hpp"
 #include "wavecontact/numerical_inversion.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/two_scale.hpp"
@@ -26,62 +27,18 @@ const double pi = M_PI;
 // Normalised units of MATH.md: b1 = pi, H1 = E* = 1, so p is p^.
 WavinessParams normalised(double m) { return {1.0, pi, m, 1.0}; }
 
-// The reference: eq. 12 written in x-space with sin(xi/2) = sin(a/2) sin(phi), which
-// removes the edge singularities,
-//   p(x) = sqrt(cos x - cos a)/(sqrt2 pi) Int_{-pi/2}^{pi/2} (G(xi) - G(x))/(cos(xi/2) sin((xi - x)/2)) dphi,
-// G(xi) = (m+1) sin(xi)/(2 (1 + m |cos xi|)^2) (eq. 2 differentiated, both branches), in long
-// double with a 61-point Gauss-Kronrod rule: a different variable, rule and precision
-// from the runtime's (v = alpha cos theta, 31 points, double). Pieces: x, the kinks, and
-// near the kink pieces graded from |x - pi/2|, over which the quotient changes across it.
+// The reference (kinked_reference.hpp) for eq. 2: G(xi) = (m+1) sin(xi)/(2 (1 + m |cos xi|)^2),
+// eq. 2 differentiated, both branches, with the kink at pi/2.
 long double reference_pressure(long double m, long double a, long double x) {
-  using std::asin;
-  using std::cos;
-  using std::fabs;
-  using std::sin;
-  using std::sqrt;
-  auto G = [&](long double xi) {
-    const long double q = 1 + m * fabs(cos(xi));
-    return (m + 1) * sin(xi) / (2 * q * q);
+  const auto G = [&](long double xi, int branch) {
+    const long double q = 1 + m * branch * std::cos(xi);
+    return (m + 1) * std::sin(xi) / (2 * q * q);
   };
-  // G' on the branch of x (cos x >= 0 or not), continued across the kink.
-  const long double branch = cos(x) >= 0 ? 1 : -1;
-  auto G_prime = [&](long double xi) {
-    const long double q = 1 + m * branch * cos(xi), dq = -m * branch * sin(xi);
-    return (m + 1) * (cos(xi) * q - 2 * sin(xi) * dq) / (2 * q * q * q);
+  const auto G_prime = [&](long double xi, int branch) {
+    const long double q = 1 + m * branch * std::cos(xi), dq = -m * branch * std::sin(xi);
+    return (m + 1) * (std::cos(xi) * q - 2 * std::sin(xi) * dq) / (2 * q * q * q);
   };
-  const long double s = sin(a / 2), Gx = G(x);
-  auto integrand = [&](long double phi) {
-    const long double xi = 2 * asin(s * sin(phi));
-    if (fabs(xi - x) < 1e-9L && (cos(xi) >= 0) == (branch > 0)) {  // the quotient's limit
-      return 2 * G_prime(x) / cos(xi / 2);
-    }
-    return (G(xi) - Gx) / (cos(xi / 2) * sin((xi - x) / 2));
-  };
-  const long double half_pi = pi / 2;
-  std::vector<long double> breaks{-half_pi, asin(sin(x / 2) / s), half_pi};
-  const long double kink = sin(pi / 4) / s;  // sin(phi) at xi = +-pi/2
-  if (kink < 1) {
-    breaks.insert(breaks.end(), {asin(kink), -asin(kink)});
-    // Across the kink from x the quotient changes over |x - pi/2|: pieces growing by 2 from it
-    // (from 1e-12: a narrower layer weighs less than the tolerances here).
-    const long double side = x < half_pi ? 1 : -1;
-    for (long double width = std::max(fabs(x - half_pi), 1e-12L); width < 1; width *= 2) {
-      const long double xi = half_pi + side * width;
-      if (xi < a) breaks.push_back(asin(sin(xi / 2) / s));
-    }
-  }
-  std::sort(breaks.begin(), breaks.end());
-  long double sum = 0;
-  for (std::size_t i = 1; i < breaks.size(); ++i) {
-    // On [-1, 1]: Boost's error estimate is floored relative to the integral over [-1, 1].
-    // Pieces narrower than 1e-6 next to the kink weigh less than their own rounding (G(xi) -
-    // G(x) over xi - x down to 1e-12) lets the tolerance see: a few levels there.
-    const long double mid = (breaks[i] + breaks[i - 1]) / 2, half = (breaks[i] - breaks[i - 1]) / 2;
-    sum += half * boost::math::quadrature::gauss_kronrod<long double, 61>::integrate(
-                      [&](long double t) { return integrand(mid + half * t); }, -1.0L, 1.0L,
-                      half > 1e-6L ? 10 : 3, 1e-15L);
-  }
-  return sqrt(cos(x) - cos(a)) / (sqrt(2.0L) * pi) * sum;
+  return kinked_reference_pressure(G, G_prime, pi / 2, a, x);
 }
 
 }  // namespace

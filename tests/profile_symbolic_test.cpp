@@ -129,6 +129,37 @@ BOOST_AUTO_TEST_CASE(refusals_say_why_and_where) {
   contains(refusal("H*cos(x)", {{"H", 1}, {"H", 2}}), "given twice");
   contains(refusal("cos(x)", {}, "9lives"), "must be a C++ identifier");
   BOOST_TEST(refusal("cos(x)+cos(2*x)/4") == "accepted");
+  // abs() (derive/branches.hpp): one parameter-free sign change, at a rational tan(x/2), where
+  // the slope stays continuous; without a sign change it is its sign.
+  contains(refusal("cos(x)+abs(cos(x))*abs(5*cos(x)-3)"), "change sign at cos x = 0, 3/5");
+  contains(refusal("H*cos(x)+abs(5*cos(x)-3)", {{"H", 1}}), "its slope jumps at cos x = 3/5");
+  BOOST_TEST(refusal("cos(x)+abs(2+cos(x))/4") == "accepted");
+  BOOST_TEST(refusal("cos(x)+(5*cos(x)+3)*abs(5*cos(x)+3)/8") == "accepted");
+}
+
+// Eq. 2 typed with its |cos x|: the top branch is the analytic one, and beyond b1/2 the load
+// and both slope forms are the built-in's, exactly (one derivation, beyond_branch.hpp).
+BOOST_AUTO_TEST_CASE(eq2_with_abs_equals_the_built_in_beyond_half) {
+  const ProfileDerivation d = derive_profile(
+      {"wave", "H1*(m+1)*cos(x)/(m*abs(cos(x))+1)", {{"H1", numeric(1)}, {"m", numeric(1, 2)}}});
+  const WavinessDerivation& w = [] {
+    static const WavinessDerivation built_in = derive_waviness();
+    return std::cref(built_in);
+  }();
+  BOOST_TEST_REQUIRE(d.branches.branched);
+  BOOST_TEST(d.branches.cosine == 0);
+  check_equal(as_built_in(d.branches.top, d), parametric_wave_curve(), "top branch");
+  check_equal(as_built_in(single_term(d.forms.pressure_angle), d), single_term(w.pressure_angle), "pressure");
+  check_equal(as_built_in(d.beyond.flank_g, d), w.beyond_half.flank_g, "flank g");
+  check_equal(as_built_in(as_ex(d.beyond.load_angle), d), as_ex(w.beyond_half.load_angle), "load beyond b1/2");
+  check_equal(as_built_in(as_ex(d.beyond.load_slope_factor), d), as_ex(w.beyond_half.load_slope_factor),
+              "dP/dSa - dP/dCa beyond b1/2");
+  check_equal(as_built_in(as_ex(d.beyond.load_slope_factor_by_parts), d),
+              as_ex(w.beyond_half.load_slope_factor_by_parts), "the same by parts");
+  // The flank's pole, cos x = 1/m: v^2 = (m-1)/(m+1) < 1, on the top's side, where the top holds
+  // (the runtime bounds the reach by a flank pole beyond beta^2 = 1 only).
+  BOOST_TEST_REQUIRE(d.flank_pole_squares.size() == 1u);
+  check_equal(as_built_in(d.flank_pole_squares[0], d), (sym::m() - 1) / (sym::m() + 1), "flank pole");
 }
 
 BOOST_AUTO_TEST_CASE(parameter_samples_parse) {

@@ -42,34 +42,39 @@ BOOST_AUTO_TEST_CASE(examples_are_built_in) {
   BOOST_TEST(wavecontact::profile_evaluator("two_harmonic").expression == "H1*cos(x)+H3*cos(3*x)");
 }
 
-// Example (a): a <= b1/2, where eq. 2 is its analytic branch, the expression y of the
-// profile; every quantity to 1e-14 relative.
+// Example (a): eq. 2 typed as an expression, |cos x| and all, over 0 < a <= b1. Up to b1/2 its
+// top branch's closed forms; beyond, the moments of both branches for the load and dP/da
+// (the same derivation as the built-in, derive/beyond_branch.hpp: equal to the last bit) and
+// the quadrature of eq. 12 across the kink for the pressure, with the profile's emitted g in
+// place of the built-in's hand-written one (kinked_inversion.hpp): both agree to the
+// quadrature's own accuracy, which is lowest at the zone's edge as a -> b1.
 BOOST_AUTO_TEST_CASE(wave_curve_expression_reproduces_the_built_in) {
-  double worst_p = 0, worst_P = 0, worst_slope = 0;
-  for (double m : {0.0, 0.2, 0.5, 1.0, 2.0, 10.0, 35.0}) {
+  double worst_p = 0, worst_beyond = 0, worst_P = 0, worst_slope = 0;
+  for (double m : {0.0, 0.2, 0.5, 1.0, 2.0, 10.0, 35.0, 1e4}) {
     const wavecontact::WavinessParams w{0.7, 4.0, m, 3.0};
     const Profile profile({"parametric_wave_curve", {{"H1", w.H1}, {"m", m}}, w.b1, w.E});
-    for (double fa : {0.02, 0.1, 0.25, 0.4, 0.5}) {
+    for (double fa : {0.02, 0.1, 0.25, 0.4, 0.5, 0.5000001, 0.51, 0.6, 0.75, 0.9, 0.99, 0.999, 1.0}) {
       const double a = fa * w.b1;
       worst_P = std::max(worst_P, relative(profile.load(a), wavecontact::load(w, a)));
       worst_slope = std::max(worst_slope, relative(profile.load_slope(a), wavecontact::load_slope(w, a)));
+      if (fa == 1.0) continue;
       for (double fx : {0.0, 0.3, 0.6, 0.9, 0.999, 1 - 1e-9}) {
         const double x = fx * a;
         const double got = profile.pressure(a, x), expected = wavecontact::pressure(w, a, x);
-        if (relative(got, expected) > 1e-14) {
-          BOOST_TEST_MESSAGE("m = " << m << ", a = " << a << ", x = " << x << ": " << got
-                                    << " vs built-in " << expected);
-        }
-        worst_p = std::max(worst_p, relative(got, expected));
+        BOOST_TEST_MESSAGE("m = " << m << ", a = " << a << ", x = " << x << ": " << got << " vs built-in "
+                                  << expected);
+        double& worst = fa <= 0.5 ? worst_p : worst_beyond;
+        worst = std::max(worst, relative(got, expected));
       }
     }
   }
-  BOOST_TEST_MESSAGE("wave curve as an expression vs built-in: pressure " << worst_p << ", load "
-                     << worst_P << ", dP/da " << worst_slope);
-  BOOST_TEST(worst_p <= 1e-14);
+  BOOST_TEST_MESSAGE("eq. 2 as an expression vs built-in: pressure " << worst_p << " up to b1/2, "
+                     << worst_beyond << " beyond; load " << worst_P << ", dP/da " << worst_slope);
   BOOST_TEST(worst_P <= 1e-14);
-  // The built-in dP/da is a quadrature of fact 7 (periodic_regime.cpp), good to ~1e-13.
-  BOOST_TEST(worst_slope <= 1e-12);
+  BOOST_TEST(worst_slope <= 1e-14);
+  // Measured 1.2e-13 (m = 1e4, 1e-9 a from the edge), 1.9e-12 (a = 0.999 b1, at the edge).
+  BOOST_TEST(worst_p <= 5e-13);
+  BOOST_TEST(worst_beyond <= 5e-12);
 }
 
 // Example (b): g(v) = -(E/2) y'(x(v)) with y' = -H1 sin x - 3 H3 sin 3x, inverted
@@ -121,19 +126,6 @@ BOOST_AUTO_TEST_CASE(two_harmonic_load_and_slope) {
   // H3 = 0 is Westergaard's sine: P = pi E* H1 sin^2(pi a/(2 b1)).
   const Profile sine = two_harmonic(0.5, 0.0, 10, 2);
   BOOST_TEST(sine.load(3.0) == pi * 2 * 0.5 * std::pow(std::sin(pi * 3.0 / 20), 2), tt::tolerance(1e-14));
-}
-
-BOOST_AUTO_TEST_CASE(pole_bounds_the_reach) {
-  // y = H1 (m+1) cos x/(m cos x + 1) has a pole where cos x = -1/m (m > 1).
-  for (double m : {0.5, 2.0, 10.0}) {
-    const Profile profile({"parametric_wave_curve", {{"H1", 1.0}, {"m", m}}, 10.0, 1.0});
-    const double expected = m > 1 ? 10.0 / pi * std::acos(-1 / m) : 10.0;
-    BOOST_TEST(profile.reach() == expected, tt::tolerance(1e-14));
-    if (m > 1) {
-      BOOST_CHECK_THROW(profile.pressure(expected * (1 + 1e-9), 0), std::domain_error);
-      BOOST_CHECK_THROW(profile.load(expected), std::domain_error);
-    }
-  }
 }
 
 BOOST_AUTO_TEST_CASE(validation_names_what_is_wrong) {

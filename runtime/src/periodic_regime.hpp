@@ -2,21 +2,16 @@
 // the zone reaches the |cos| branch of eq. 2, so the right-hand side of eq. 5 is
 //   g(v) = E* H1 (m+1) v (1+v^2) / (1 + v^2 + m |1 - v^2|)^2,
 // piecewise rational with a kink in its slope at v = +-1 (cos x^ = 0). The pressure is
-// evaluated by adaptive Gauss-Kronrod quadrature split at the kinks, which converges
-// geometrically on each smooth piece (MATH.md section 4). Normalised: b1 = pi, H1 = E* = 1;
+// evaluated by the quadrature of kinked_inversion.hpp. Normalised: b1 = pi, H1 = E* = 1;
 // angles are passed as half-angle sines and cosines so that nothing cancels. The load and
 // its slope have closed forms (derive/sub_interval.hpp).
 #pragma once
 
+#include "kinked_inversion.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
 
 namespace wavecontact::detail {
-
-// The zone in half-angles: s = sin(a^/2), c = cos(a^/2), a^ = pi a/b1 in (0, pi).
-struct HalfAngles {
-  double s, c;
-};
 
 // p^(x^) of eq. 12 for the zone `zone` at the point with half-angles `point`,
 // 0 <= x^ < a^. D = cos x^ - cos a^ (computed without cancellation by the caller).

@@ -6,8 +6,10 @@
 #include <stdexcept>
 
 #include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/cos_pi.hpp>
 #include <boost/math/special_functions/sin_pi.hpp>
 
+#include "kinked_inversion.hpp"
 #include "profiles.hpp"  // generated/
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
@@ -38,9 +40,16 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 void register_profile(const ProfileEvaluator& evaluator) {
+  const BranchEvaluators& b = evaluator.branch;
+  const bool branch_complete =
+      b.beta == 0 || (b.beta > 0 && std::isfinite(b.beta) && b.cosine > -1 && b.cosine < 1 && b.load &&
+                      b.load_near_branch && b.top_piece_argument && b.load_slope_factor &&
+                      b.load_slope_factor_by_parts && b.top_g && b.flank_g && b.top_divided_difference &&
+                      b.flank_divided_difference && b.jump && b.flank_height && b.flank_height_slope &&
+                      b.flank_pole_squares && b.flank_pole_count >= 0);
   if (evaluator.name.empty() || !evaluator.pressure || !evaluator.load ||
       !evaluator.load_slope_factor || !evaluator.height || !evaluator.height_slope ||
-      !evaluator.pole_squares || evaluator.pole_count < 0 || evaluator.harmonic < 0) {
+      !evaluator.pole_squares || evaluator.pole_count < 0 || evaluator.harmonic < 0 || !branch_complete) {
     throw std::invalid_argument("wavecontact::register_profile: incomplete evaluator \"" +
                                 evaluator.name + "\"");
   }
@@ -91,15 +100,20 @@ Profile::Profile(const ProfileParams& params)
     detail::require_finite(function, name.c_str(), it->second);
     q_.push_back(it->second);
   }
-  // A real pole tau = tan^2(x^/2) > 0 bounds the zone: x < (b1/pi) 2 atan(sqrt(tau)).
-  std::vector<double> tau(static_cast<std::size_t>(evaluator_.pole_count));
-  evaluator_.pole_squares(q_.data(), tau.data());
+  // A real pole tau = tan^2(x^/2) > 0 bounds the zone: x < (b1/pi) 2 atan(sqrt(tau)), if it lies
+  // on the branch that holds there (the top's short of beta^2, the flank's beyond).
+  const BranchEvaluators& branch = evaluator_.branch;
+  std::vector<double> top(static_cast<std::size_t>(evaluator_.pole_count)),
+      flank(static_cast<std::size_t>(branch.flank_pole_count));
+  evaluator_.pole_squares(q_.data(), top.data());
+  if (branch.beta > 0) branch.flank_pole_squares(q_.data(), flank.data());
   reach_ = params.b1;
-  for (double t : tau) {
+  const auto bound = [&](double t, bool on_branch) {
     if (std::isnan(t)) {
       throw std::domain_error(std::string(function) + ": profile " + params.name +
                               ": a pole of the profile is undefined at these parameters");
     }
+    if (!on_branch) return;
     if (t == 0) {
       throw std::domain_error(std::string(function) + ": profile " + params.name +
                               " has a pole at x = 0 for these parameters (no contact is possible)");
@@ -107,7 +121,14 @@ Profile::Profile(const ProfileParams& params)
     if (t > 0 && std::isfinite(t)) {
       reach_ = std::min(reach_, params.b1 / pi * 2 * std::atan(std::sqrt(t)));
     }
-  }
+  };
+  const double beta_square = branch.beta * branch.beta;
+  for (double t : top) bound(t, branch.beta == 0 || t <= beta_square);
+  for (double t : flank) bound(t, t >= beta_square);
+}
+
+bool Profile::beyond_branch(double Ca) const {
+  return evaluator_.branch.beta > 0 && Ca < evaluator_.branch.cosine;
 }
 
 void Profile::check_half_width(const char* function, double a, bool closed) const {
@@ -128,6 +149,23 @@ double Profile::pressure(double a, double x) const {
   if (y >= a) return 0;
   const ZoneAngles zone = zone_angles(a, params_.b1);
   const PointAngles point = point_angles(y, a, params_.b1);
+  if (beyond_branch(zone.Ca)) {
+    const BranchEvaluators& b = evaluator_.branch;
+    const double* q = q_.data();
+    const double E = params_.E;
+    const detail::PiecewiseDividedDifference divided_difference{
+        b.beta,
+        [&](double v) { return b.top_g(q, E, v); },
+        [&](double v) { return b.flank_g(q, E, v); },
+        [&](double v, double u) { return b.top_divided_difference(q, E, v, u); },
+        [&](double v, double u) { return b.flank_divided_difference(q, E, v, u); },
+        [&](double u) { return b.jump(q, E, u); }};
+    const auto half_angles = [&](double x) {
+      return detail::HalfAngles{boost::math::sin_pi(x / (2 * params_.b1)), boost::math::cos_pi(x / (2 * params_.b1))};
+    };
+    return pi / params_.b1 *
+           detail::kinked_pressure(divided_difference, b.beta, half_angles(a), half_angles(y), point.D);
+  }
   return evaluator_.pressure(q_.data(), params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx,
                              point.Sx, point.D);
 }
@@ -136,7 +174,11 @@ double Profile::load(double a) const {
   constexpr const char* function = "wavecontact::Profile::load";
   check_half_width(function, a, true);
   const ZoneAngles zone = zone_angles(a, params_.b1);
-  const double P = evaluator_.load(q_.data(), params_.E, zone.Ca, zone.Sa);
+  const BranchEvaluators& b = evaluator_.branch;
+  const double* q = q_.data();
+  const double P = !beyond_branch(zone.Ca)                                 ? evaluator_.load(q, params_.E, zone.Ca, zone.Sa)
+                   : b.top_piece_argument(q, zone.Ca, zone.Sa) >= 1 ? b.load_near_branch(q, params_.E, zone.Ca, zone.Sa)
+                                                                    : b.load(q, params_.E, zone.Ca, zone.Sa);
   if (!std::isfinite(P)) {
     detail::domain_error(function, "a", a, "a half-width where the closed-form load is finite");
   }
@@ -147,8 +189,14 @@ double Profile::load_slope(double a) const {
   constexpr const char* function = "wavecontact::Profile::load_slope";
   check_half_width(function, a, true);
   const ZoneAngles zone = zone_angles(a, params_.b1);
-  return pi / params_.b1 * boost::math::sin_pi(a / params_.b1) *
-         evaluator_.load_slope_factor(q_.data(), params_.E, zone.Ca, zone.Sa);
+  const BranchEvaluators& b = evaluator_.branch;
+  const double* q = q_.data();
+  const double factor = !beyond_branch(zone.Ca) ? evaluator_.load_slope_factor(q, params_.E, zone.Ca, zone.Sa)
+                        : b.top_piece_argument(q, zone.Ca, zone.Sa) >= 0
+                            ? b.load_slope_factor_by_parts(q, params_.E, zone.Ca, zone.Sa)
+                            : b.load_slope_factor(q, params_.E, zone.Ca, zone.Sa);
+  // sin(pi a/b1) = sin(pi (b1 - a)/b1), b1 - a exact beyond b1/2: no digits lost as a -> b1.
+  return pi / params_.b1 * boost::math::sin_pi((a > params_.b1 / 2 ? params_.b1 - a : a) / params_.b1) * factor;
 }
 
 }  // namespace wavecontact

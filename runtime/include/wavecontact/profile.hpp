@@ -1,7 +1,7 @@
 // User profiles: any even periodic shape y(x), rational in cos(k x) and sin(k x), derived
 // by `wavecontact-derive --profile EXPR --name NAME` (derive/user_profile.hpp) into
 // profile_<NAME>.hpp, whose evaluators reach the runtime through ProfileEvaluator.
-// Examples built in: parametric_wave_curve (eq. 2's analytic branch as an expression) and
+// Examples built in: parametric_wave_curve (eq. 2 as an expression, |cos x| and all) and
 // two_harmonic (H1 cos x + H3 cos 3x); others are registered with register_profile().
 //
 // One contact zone |x| < a per period 2 b1, centred on x = 0 (a top of the profile), with
@@ -14,6 +14,32 @@
 #include <vector>
 
 namespace wavecontact {
+
+// The evaluators of a profile built with abs(), such as eq. 2, beyond the point x^_b where
+// the branch changes (cos x^_b = cosine, v = tan(x^_b/2) = beta): beyond_branch.hpp of derive/.
+// With the zone short of x^_b the profile's own evaluators (its top branch) hold; beyond it
+// the load and its slope factor in two forms each, selected by the top piece's argument z
+// (load_near_branch where z >= 1, load_slope_factor_by_parts where z >= 0), and for the
+// pressure the quadrature of eq. 12 over g of both branches (with the divided differences
+// that keep their digits as v -> u, and the jump g_flank(u) - g_top(u) across the kink).
+struct BranchEvaluators {
+  double cosine = 0, beta = 0;  // beta = 0: the profile has one branch
+  double (*load)(const double* q, double E, double Ca, double Sa) = nullptr;
+  double (*load_near_branch)(const double* q, double E, double Ca, double Sa) = nullptr;
+  double (*top_piece_argument)(const double* q, double Ca, double Sa) = nullptr;
+  double (*load_slope_factor)(const double* q, double E, double Ca, double Sa) = nullptr;
+  double (*load_slope_factor_by_parts)(const double* q, double E, double Ca, double Sa) = nullptr;
+  double (*top_g)(const double* q, double E, double v) = nullptr;
+  double (*flank_g)(const double* q, double E, double v) = nullptr;
+  double (*top_divided_difference)(const double* q, double E, double v, double u) = nullptr;
+  double (*flank_divided_difference)(const double* q, double E, double v, double u) = nullptr;
+  double (*jump)(const double* q, double E, double u) = nullptr;
+  double (*flank_height)(const double* q, double Cx) = nullptr;
+  double (*flank_height_slope)(const double* q, double Cx) = nullptr;
+  // The poles tau_i = tan^2(x^_i/2) of the flank's g that depend on the parameters.
+  void (*flank_pole_squares)(const double* q, double* tau) = nullptr;
+  int flank_pole_count = 0;
+};
 
 // The generated evaluators of one profile behind a uniform interface; q points to the
 // parameters in the order of `parameters`. The angle atoms are those of angles.hpp.
@@ -34,6 +60,7 @@ struct ProfileEvaluator {
   // The poles tau_i = tan^2(x^_i/2) of the profile that depend on the parameters.
   void (*pole_squares)(const double* q, double* tau) = nullptr;
   int pole_count = 0;
+  BranchEvaluators branch;  // for a profile built with abs()
 };
 
 // Adds (or replaces) the evaluators of evaluator.name.
@@ -66,7 +93,7 @@ class Profile {
   const std::vector<double>& parameter_values() const { return q_; }
 
   // The largest half-width the contact reaches: b1 (full contact), or the first x > 0
-  // where the profile has a pole, which no contact zone can reach.
+  // where the profile (on the branch that holds there) has a pole, which no zone can reach.
   double reach() const { return reach_; }
 
   // p(x) for the half-width a, 0 < a < reach(); x taken modulo 2 b1, 0 outside the zone.
@@ -77,6 +104,8 @@ class Profile {
 
  private:
   void check_half_width(const char* function, double a, bool closed) const;
+  // Whether the zone |x| < a reaches beyond the change of branch of a profile built with abs().
+  bool beyond_branch(double Ca) const;
   ProfileParams params_;
   ProfileEvaluator evaluator_;
   std::vector<double> q_;
