@@ -80,12 +80,13 @@ std::string harmonic_wrapper(const std::string& quantity, const std::string& doc
 
 // The arguments of the evaluators of a pressure, of a load and of the profile's height.
 struct EvaluatorArguments {
-  std::vector<ex> pressure, load, height;
+  std::vector<ex> pressure, load, height, full_contact;
 };
 
 EvaluatorArguments evaluator_arguments(const ProfileDerivation& d) {
   return {with_parameters({sym::E(), sym::b1()}, d, {sym::Ca(), sym::Sa(), sym::Cx(), sym::Sx(), sym::D()}),
-          with_parameters({sym::E()}, d, {sym::Ca(), sym::Sa()}), with_parameters({}, d, {sym::Cx()})};
+          with_parameters({sym::E()}, d, {sym::Ca(), sym::Sa()}), with_parameters({}, d, {sym::Cx()}),
+          with_parameters({sym::E(), sym::b1()}, d, {sym::Cx()})};
 }
 
 // The five evaluators of a profile with a cosine sum, each the sum plus R's closed form.
@@ -114,6 +115,15 @@ std::string harmonic_evaluators(const ProfileDerivation& d, bool rational) {
                          "harmonic_series_load_slope_factor<Scalar>(A, " + K + ", work, E, Ca)",
                          rational, true)
      << "\n"
+     << (d.branches.branched
+             ? ""
+             : harmonic_wrapper("full_contact_pressure",
+                                "p_fc(x) of full contact: p = P/(2 b1) + p_fc, the cosine sum's sum_k k A_k cos(k x^)" +
+                                    plus_rest + "." + linear,
+                                arguments.full_contact, d,
+                                "harmonic_series_full_contact_pressure<Scalar>(A, " + K + ", E, b1, Cx)", rational,
+                                false) +
+                   "\n")
      << harmonic_wrapper("height",
                          "The profile in Cx = cos x^: y(x^) = Y(Cx)" + plus_rest + "." + linear,
                          arguments.height, d,
@@ -278,6 +288,12 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
                          "dP/dSa - dP/dCa" + of_rest +
                              ", so that dP/da = (pi/b1) sin(a^) times this.",
                          arguments.load, single_term(forms.load_slope_factor)});
+    if (!d.branches.branched) {
+      functions.push_back({rest + "_full_contact_pressure",
+                           "p_fc(x) of full contact" + of_rest +
+                               " (derive/full_contact.hpp): p = P/(2 b1) + p_fc, while it is >= 0.",
+                           arguments.full_contact, d.full_contact_pressure});
+    }
     functions.push_back({rest + "_height", "The profile" + of_rest + " in Cx = cos x^: y(x^) = Y(Cx).",
                          arguments.height, forms.rational_height});
     functions.push_back({rest + "_height_slope",
@@ -354,6 +370,9 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
      << ", double E, double Ca, double Sa) {\n"
      << "    return " << name << "_load_slope_factor<double>(E, " << q << "Ca, Sa);\n  };\n"
      << height_adapter(d, "height") << height_adapter(d, "height_slope")
+     << (d.branches.branched ? ""
+                             : adapter(d, "full_contact_pressure", "double E, double b1, double Cx",
+                                       "full_contact_pressure", "E, b1, " + q + "Cx"))
      << "  e.harmonic = " << d.forms.harmonic << ";\n"
      << "  e.pole_squares = [](const double* " << (d.pole_squares.empty() ? "/*q*/" : unused)
      << ", double* " << (d.pole_squares.empty() ? "/*tau*/" : "tau") << ") {\n";
@@ -396,6 +415,9 @@ std::string manifest(const ProfileDerivation& d, const std::string& command) {
   os << "profile.height = " << canonical_rational(d.forms.height) << "\n";
   os << "profile.height_slope = " << canonical_rational(d.forms.height_slope) << "\n";
   os << "profile.harmonic = " << d.forms.harmonic << "\n";
+  if (!d.branches.branched) {
+    os << "profile.full_contact_pressure = " << canonical_string(d.full_contact_pressure) << "\n";
+  }
   if (d.branches.branched) {
     const BeyondBranch& b = d.beyond;
     os << "branch.cosine = " << d.branches.cosine << "\n"

@@ -9,6 +9,7 @@
 
 #include "block_keer.hpp"
 #include "expression_input.hpp"
+#include "full_contact.hpp"
 #include "hilbert.hpp"
 #include "sub_interval.hpp"
 #include "symbols.hpp"
@@ -228,7 +229,11 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
     if (parts.cosine.empty()) check_whole_order(spec, parts.rational);
     check_poles_off_the_period(spec, parts.rational, d.branches.branched ? d.branches.cosine : numeric(-1));
     d.forms = derive_closed_forms(y, parts, d.sample);
-    if (d.branches.branched) derive_flank(spec, d);
+    if (d.branches.branched) {
+      derive_flank(spec, d);
+    } else {
+      d.full_contact_pressure = full_contact_pressure(parts.rational);
+    }
   } catch (const InputRefused&) {
     throw;
   } catch (const std::invalid_argument& e) {

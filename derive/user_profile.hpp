@@ -50,6 +50,9 @@ struct ProfileDerivation {
   // which bound the contact where they lie beyond beta (the top's where they lie short of it).
   BranchSplit branches;
   BeyondBranch beyond;
+  // p_fc(x) of full contact (full_contact.hpp) for the rational part R, in Cx; none (0) for a
+  // profile built with abs().
+  GiNaC::ex full_contact_pressure;
   GiNaC::ex flank_height, flank_height_slope;
   std::vector<GiNaC::ex> flank_pole_squares;
 };

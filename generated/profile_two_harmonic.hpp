@@ -58,6 +58,15 @@ inline Scalar two_harmonic_load_slope_factor(const Scalar& E, const Scalar& H1, 
   return wavecontact::harmonic_series_load_slope_factor<Scalar>(A, 3, work, E, Ca);
 }
 
+// p_fc(x) of full contact: p = P/(2 b1) + p_fc, the cosine sum's sum_k k A_k cos(k x^).
+// Cost: O(K) operations, K = 3.
+template <typename Scalar>
+inline Scalar two_harmonic_full_contact_pressure(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& H3, const Scalar& Cx) {
+  Scalar A[4];
+  two_harmonic_cosine_coefficients<Scalar>(H1, H3, A);
+  return wavecontact::harmonic_series_full_contact_pressure<Scalar>(A, 3, E, b1, Cx);
+}
+
 // The profile in Cx = cos x^: y(x^) = Y(Cx).
 // Cost: O(K) operations, K = 3.
 template <typename Scalar>
@@ -96,6 +105,9 @@ inline ProfileEvaluator two_harmonic_profile_evaluator() {
   };
   e.height_slope = [](const double* q, double Cx) {
     return two_harmonic_height_slope<double>(q[0], q[1], Cx);
+  };
+  e.full_contact_pressure = [](const double* q, double E, double b1, double Cx) {
+    return two_harmonic_full_contact_pressure<double>(E, b1, q[0], q[1], Cx);
   };
   e.harmonic = 3;
   e.pole_squares = [](const double* /*q*/, double* /*tau*/) {

@@ -14,6 +14,7 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
+#include "fourier_reference.hpp"
 #include "kinked_reference.hpp"
 #include "profile_analytic_wave.hpp"
 #include "profile_kinked.hpp"
@@ -133,4 +134,28 @@ BOOST_AUTO_TEST_CASE(pole_bounds_the_reach) {
     // Eq. 2 itself changes branch at b1/2 before the pole: it reaches full contact.
     BOOST_TEST(Profile({"parametric_wave_curve", {{"H1", 1.0}, {"m", m}}, 10.0, 1.0}).reach() == 10.0);
   }
+}
+
+// Full contact in closed form (derive/full_contact.hpp) against the cosine coefficients of the
+// profile (fourier_reference.hpp); eq. 2 built with abs() has none, a pole on the period none.
+BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
+  kinked(1, 1);  // registers
+  const double b1 = 10, E = 2, P = 3;
+  for (double m : {0.0, 0.3, 0.5, 0.8}) {
+    const Profile profile({"analytic_wave", {{"H1", 0.7}, {"m", m}}, b1, E});
+    const auto y = [&](long double x) { return 0.7L * (m + 1) * std::cos(x) / (m * std::cos(x) + 1); };
+    double worst = 0, scale = 0;
+    for (double x : {0.0, 1.0, 3.0, 5.0, 7.5, 10.0, -4.0}) {
+      const double expected = P / (2 * b1) + E / 2 * pi / b1 * static_cast<double>(fourier_slope_sum(y, pi * x / b1, 512));
+      worst = std::max(worst, std::fabs(profile.full_contact_pressure(P, x) - expected));
+      scale = std::max(scale, std::fabs(expected));
+    }
+    BOOST_TEST_MESSAGE("analytic_wave, m = " << m << ": full contact within " << worst / scale << " of max |p|");
+    BOOST_TEST(worst <= 1e-13 * scale, "m = " << m << ": " << worst / scale);
+  }
+  const Profile pole({"analytic_wave", {{"H1", 1.0}, {"m", 2.0}}, b1, E});
+  BOOST_CHECK_THROW(pole.full_contact_pressure(P, 0), std::domain_error);
+  const Profile eq2({"parametric_wave_curve", {{"H1", 1.0}, {"m", 0.5}}, b1, E});
+  BOOST_CHECK_THROW(eq2.full_contact_pressure(P, 0), std::domain_error);
+  BOOST_CHECK_THROW(kinked(1, 0.2).full_contact_pressure(-1, 0), std::domain_error);
 }

@@ -17,6 +17,7 @@
 
 #include <boost/math/quadrature/gauss.hpp>
 
+#include "fourier_reference.hpp"
 #include "profile_bump64.hpp"
 #include "profile_power256.hpp"
 #include "profile_two_scale256.hpp"
@@ -149,5 +150,25 @@ BOOST_AUTO_TEST_CASE(load_slope_and_height) {
     }
     BOOST_TEST(worst_height <= 1e-14, test.name << ": height " << worst_height);
     BOOST_TEST(worst_slope <= 1e-12, test.name << ": dY/dCx " << worst_slope);
+  }
+}
+
+// Full contact in closed form: the cosine sum's sum_k k A_k cos(k x) (harmonic_series.hpp) plus
+// the rest's residues (derive/full_contact.hpp), against the profile's cosine coefficients
+// (fourier_reference.hpp, 1024 points: exact for the cosine sums of order <= 256 and
+// converged for c cos x/(2 - cos x)). Within 1e-12 of the largest |p_fc|.
+BOOST_AUTO_TEST_CASE(full_contact_against_the_cosine_coefficients) {
+  const double b1 = 3, E = 2, P = 0.5;
+  for (const Case& test : cases()) {
+    const Profile p = profile(test, b1, E);
+    double worst = 0, scale = 0;
+    for (double x : {0.0, 0.01, 0.4, 1.5, 2.9, 3.0}) {
+      const double expected =
+          P / (2 * b1) + E / 2 * M_PI / b1 * static_cast<double>(fourier_slope_sum(test.y, M_PI * x / b1, 1024));
+      worst = std::max(worst, std::fabs(p.full_contact_pressure(P, x) - expected));
+      scale = std::max(scale, std::fabs(expected - P / (2 * b1)));
+    }
+    BOOST_TEST_MESSAGE(test.name << ": full contact within " << worst / scale << " of max |p_fc|");
+    BOOST_TEST(worst <= 1e-12 * scale, test.name << ": " << worst / scale);
   }
 }

@@ -8,6 +8,7 @@
 
 #include "angle_form.hpp"
 #include "emit_common.hpp"
+#include "full_contact.hpp"
 #include "symbols.hpp"
 #include "user_profile.hpp"
 #include "waviness.hpp"
@@ -135,6 +136,30 @@ BOOST_AUTO_TEST_CASE(refusals_say_why_and_where) {
   contains(refusal("H*cos(x)+abs(5*cos(x)-3)", {{"H", 1}}), "its slope jumps at cos x = 3/5");
   BOOST_TEST(refusal("cos(x)+abs(2+cos(x))/4") == "accepted");
   BOOST_TEST(refusal("cos(x)+(5*cos(x)+3)*abs(5*cos(x)+3)/8") == "accepted");
+}
+
+// Full contact (derive/full_contact.hpp) against closed forms worked by hand: cos(3x) whole
+// through the residues (its pole of order 3 at v^2 = -1) gives (E/2)(pi/b1) 3 T_3(Cx); and
+// 1/(c - cos x), whose cosine coefficients are 2 rho^k/sqrt(c^2 - 1), rho = c - sqrt(c^2 - 1),
+// gives (E/2)(pi/b1)(c Cx - 1)/(sqrt(c^2 - 1)(c - Cx)^2) (c = 5/4: a rational root; c = 2).
+BOOST_AUTO_TEST_CASE(full_contact_closed_forms) {
+  const ex C = sym::Cx(), scale = sym::E() / 2 * GiNaC::Pi / sym::b1();
+  check_equal(full_contact_pressure(4 * GiNaC::pow(C, 3) - 3 * C), scale * 3 * (4 * GiNaC::pow(C, 3) - 3 * C),
+              "cos(3x)");
+  const long digits = GiNaC::Digits;
+  GiNaC::Digits = 40;
+  for (const numeric& c : {numeric(5, 4), numeric(2)}) {
+    const ex expected = scale * (c * C - 1) / (GiNaC::sqrt(c * c - 1) * GiNaC::pow(c - C, 2));
+    const ex got = full_contact_pressure(1 / (c - C));
+    // sqrt(3) is not a rational: compare at 40 digits on a grid of Cx.
+    for (const numeric& x : {numeric(-1), numeric(-1, 3), numeric(0), numeric(1, 2), numeric(1)}) {
+      const GiNaC::exmap at{{C, x}, {sym::E(), 3}, {sym::b1(), 2}};
+      const ex difference = (got.subs(at) - expected.subs(at)).evalf();
+      BOOST_TEST(GiNaC::abs(GiNaC::ex_to<numeric>(difference)) < numeric(1, 1000000000) * numeric(1, 1000000000) * numeric(1, 1000000000),
+                 "1/(" << c << " - cos x) at Cx = " << x << ": " << got.subs(at).evalf() << " vs " << expected.subs(at).evalf());
+    }
+  }
+  GiNaC::Digits = digits;
 }
 
 // Eq. 2 typed with its |cos x|: the top branch is the analytic one, and beyond b1/2 the load

@@ -129,6 +129,20 @@ BOOST_AUTO_TEST_CASE(two_harmonic_load_and_slope) {
   BOOST_TEST(sine.load(3.0) == pi * 2 * 0.5 * std::pow(std::sin(pi * 3.0 / 20), 2), tt::tolerance(1e-14));
 }
 
+// Full contact of H1 cos x + H3 cos 3x: p = P/(2 b1) + (E/2)(pi/b1)(H1 cos x + 3 H3 cos 3x).
+BOOST_AUTO_TEST_CASE(two_harmonic_full_contact) {
+  const double b1 = 10, E = 2, P = 0.4;
+  for (double H3 : {0.0, 0.1, -0.2}) {
+    const Profile profile = two_harmonic(1.0, H3, b1, E);
+    for (double x : {0.0, 1.5, 5.0, 9.9, -3.0, 23.0}) {
+      const double c = pi * x / b1;
+      const double expected = P / (2 * b1) + E / 2 * pi / b1 * (std::cos(c) + 3 * H3 * std::cos(3 * c));
+      BOOST_TEST(profile.full_contact_pressure(P, x) == expected, tt::tolerance(1e-14));
+    }
+  }
+  BOOST_CHECK_THROW(two_harmonic(1.0, 0.1).full_contact_pressure(std::nan(""), 0), std::domain_error);
+}
+
 BOOST_AUTO_TEST_CASE(validation_names_what_is_wrong) {
   auto message = [](auto&& f) {
     try {

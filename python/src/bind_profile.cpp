@@ -44,7 +44,9 @@ void bind_profile(py::module_& m) {
           },
           "a"_a, "x"_a, "p(x) for the half-width a, 0 < a < reach (a float or an array).")
       .def("load", &Profile::load, "a"_a, "P (eq. 6) for the half-width a.")
-      .def("load_slope", &Profile::load_slope, "a"_a, "dP/da.");
+      .def("load_slope", &Profile::load_slope, "a"_a, "dP/da.")
+      .def("full_contact_pressure", &Profile::full_contact_pressure, "P"_a, "x"_a,
+           "Full contact in closed form: P/(2 b1) + p_fc(x), while it is >= 0.");
 
   m.def("admissibility", py::overload_cast<const Profile&, double>(&admissibility), "profile"_a, "a"_a,
         "Whether the single zone of half-width a of a user profile is the contact.");

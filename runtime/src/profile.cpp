@@ -199,4 +199,20 @@ double Profile::load_slope(double a) const {
   return pi / params_.b1 * boost::math::sin_pi((a > params_.b1 / 2 ? params_.b1 - a : a) / params_.b1) * factor;
 }
 
+double Profile::full_contact_pressure(double P, double x) const {
+  constexpr const char* function = "wavecontact::Profile::full_contact_pressure";
+  if (!evaluator_.full_contact_pressure) {
+    throw std::domain_error(std::string(function) + ": profile " + params_.name +
+                            " has no closed form of full contact (it is built with abs())");
+  }
+  if (reach_ < params_.b1) {
+    throw std::domain_error(std::string(function) + ": profile " + params_.name + " has a pole at x = " +
+                            detail::format(reach_) + " of the period: no full contact");
+  }
+  if (!(std::isfinite(P) && P >= 0)) detail::domain_error(function, "P", P, "a finite load P >= 0");
+  detail::require_finite(function, "x", x);
+  const double Cx = boost::math::cos_pi(reduce_to_period(x, params_.b1) / params_.b1);
+  return P / (2 * params_.b1) + evaluator_.full_contact_pressure(q_.data(), params_.E, params_.b1, Cx);
+}
+
 }  // namespace wavecontact

@@ -2,7 +2,10 @@
 version is the CMake project's."""
 import ast
 import inspect
+import math
 import os
+
+import pytest
 
 import wavecontact as wc
 
@@ -56,3 +59,11 @@ def test_everything_is_documented():
                 undocumented.append(f"{name}.{member}")
     assert not undocumented, f"no docstring: {undocumented}"
     assert "an array of any shape" in wc.pressure.__doc__
+
+
+def test_profile_full_contact():
+    """Full contact of H1 cos x + H3 cos 3x: P/(2 b1) + (E/2)(pi/b1)(H1 cos x + 3 H3 cos 3x)."""
+    profile = wc.Profile("two_harmonic", b1=10, E=2, H1=1, H3=0.1)
+    c = math.pi * 2.5 / 10
+    expected = 0.4 / 20 + math.pi / 10 * (math.cos(c) + 0.3 * math.cos(3 * c))
+    assert profile.full_contact_pressure(0.4, 2.5) == pytest.approx(expected, rel=1e-14)

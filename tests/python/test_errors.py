@@ -29,6 +29,8 @@ SURFACE = wc.Surface(wc.WavinessParams(H1=1, b1=10, m=0, E=1), [wc.Harmonic(H=0.
     (lambda: wc.Profile("no_such_profile", b1=10, E=1), "no_such_profile"),
     (lambda: wc.Profile("two_harmonic", b1=10, E=1, H1=1), "H3"),
     (lambda: wc.Profile("two_harmonic", b1=10, E=1, H1=1, H3=0.1, H7=2), "H7"),
+    (lambda: wc.Profile("parametric_wave_curve", b1=10, E=1, H1=1, m=0.5).full_contact_pressure(1.0, 0.0),
+     "built with abs()"),
     (lambda: wc.solve_contact(SURFACE, -1.0), "P = -1"),
     (lambda: wc.solve_contact(SURFACE, [0.3, math.nan]), "P = nan"),
     (lambda: wc.solve_contact(SURFACE, 0.3, tolerance=0.5), "tolerance"),

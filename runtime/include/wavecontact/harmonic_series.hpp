@@ -8,6 +8,7 @@
 //   P     = (pi/2) E* sum_k k A_k [P_{k-1}(Ca) - P_k(Ca)],
 //   dP/da = (pi/b1) sin(a^) (pi/2) E* sum_k k A_k [P'_k(Ca) - P'_{k-1}(Ca)],
 //   Y(Cx) = sum_k A_k T_k(Cx),  dY/dCx = sum_k k A_k U_{k-1}(Cx),
+//   full contact: p_fc(x) = (pi/b1)(E*/2) sum_k k A_k T_k(Cx),
 // P_k Legendre's polynomials (three-term recurrence, |P_k| <= 1), V_j, T_k, U_k Chebyshev's
 // of the third, first and second kinds, summed by Clenshaw's recurrence in Reinsch's form
 // (from the atom Sx = 1 - Cx for Cx >= 0, from 1 + Cx below), which does not amplify
@@ -118,6 +119,17 @@ Scalar harmonic_series_load_slope_factor(const Scalar* A, int K, Scalar* work, c
   }
   const Scalar pi = Scalar(3.141592653589793238462643383279502884L);
   return pi / 2 * E * sum;
+}
+
+// Full contact: p_fc(x) = (pi/b1)(E*/2) sum_k k A_k T_k(Cx) (derive/full_contact.hpp).
+template <typename Scalar>
+Scalar harmonic_series_full_contact_pressure(const Scalar* A, int K, const Scalar& E, const Scalar& b1,
+                                             const Scalar& Cx) {
+  const Scalar Sx = Scalar(1) - Cx;
+  const detail::Clenshaw<Scalar> c =
+      detail::clenshaw_reinsch([&](int k) { return Scalar(k) * A[k]; }, K + 1, Cx, Sx);
+  const Scalar pi = Scalar(3.141592653589793238462643383279502884L);
+  return pi / b1 * E / 2 * (c.upper ? c.r0 + Sx * c.b1 : c.r0 - (Scalar(1) + Cx) * c.b1);
 }
 
 // Y(Cx) = sum_{k<=K} A_k T_k(Cx).
