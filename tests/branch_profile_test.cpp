@@ -13,11 +13,13 @@
 #include <cmath>
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
+#include <boost/math/tools/minima.hpp>
 
 #include "fourier_reference.hpp"
 #include "kinked_reference.hpp"
 #include "profile_analytic_wave.hpp"
 #include "profile_kinked.hpp"
+#include "wavecontact/contact.hpp"
 #include "wavecontact/profile.hpp"
 
 namespace tt = boost::test_tools;
@@ -158,4 +160,29 @@ BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
   const Profile eq2({"parametric_wave_curve", {{"H1", 1.0}, {"m", 0.5}}, b1, E});
   BOOST_CHECK_THROW(eq2.full_contact_pressure(P, 0), std::domain_error);
   BOOST_CHECK_THROW(kinked(1, 0.2).full_contact_pressure(-1, 0), std::domain_error);
+}
+
+// The closed form against the multi-zone contact solver (contact.hpp), which finds full
+// contact numerically (Chebyshev panels over the period): the onset -2 b1 min p_fc and the
+// pressure above it.
+BOOST_AUTO_TEST_CASE(full_contact_agrees_with_the_contact_solver) {
+  kinked(1, 1);  // registers
+  const double b1 = 10, E = 2;
+  const Profile profile({"analytic_wave", {{"H1", 0.7}, {"m", 0.5}}, b1, E});
+  const wavecontact::Surface surface(profile);
+  const auto p_fc = [&](double x) { return profile.full_contact_pressure(0, x); };
+  const auto [x_min, lowest] = boost::math::tools::brent_find_minima(p_fc, 0.0, b1, 52);
+  BOOST_TEST(x_min > 0.5 * b1);
+  const double onset = -2 * b1 * lowest;
+  BOOST_TEST(wavecontact::full_contact_load(surface) == onset, tt::tolerance(1e-9));
+  const double P = 1.5 * onset;
+  const wavecontact::Contact contact = wavecontact::solve_contact(surface, P);
+  BOOST_TEST_REQUIRE(contact.full_contact());
+  double worst = 0;
+  for (int i = 0; i <= 100; ++i) {
+    const double x = -b1 + 2 * b1 * i / 100;
+    worst = std::max(worst, std::fabs(contact.pressure(x) - profile.full_contact_pressure(P, x)));
+  }
+  BOOST_TEST_MESSAGE("analytic_wave full contact: solver vs closed form " << worst / contact.max_pressure());
+  BOOST_TEST(worst <= 1e-12 * contact.max_pressure());
 }
