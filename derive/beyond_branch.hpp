@@ -31,6 +31,19 @@ struct BeyondBranch {
   // the jump of g' at the branch and cancel where the zone reaches well beyond it, for z >= 0.
   std::vector<MomentTerm> load_slope_factor;
   std::vector<MomentTerm> load_slope_factor_by_parts_v, load_slope_factor_by_parts;
+  // The pressure p(x) (eq. 12, physical units) at a point on one branch ("own"; the top,
+  // |u| < beta, or the flank), in v-variables and in angle atoms: the moment of the own piece
+  // (t - s divided out) plus that of the other piece, either with the Cauchy factor 1/(t - s)
+  // beside the other branch's pole factor (other_cauchy: J_{j,l} atoms, whose terms cancel
+  // like log(1 + y) near the branch), or with the jump f_other(s) - f_own(s) apart (other +
+  // jump: coefficients with the other branch's pole at s instead). Each piece comes in the
+  // I_{j,l} and in the edge basis I'_{j,l}, J'_{j,l} (sub_interval.hpp), for its pole factor's
+  // argument >= 0 and < 0 (own_argument, other_argument).
+  struct SidePressure {
+    std::vector<MomentTerm> own, own_edge, other_cauchy, other_cauchy_edge, other, other_edge, jump;
+    GiNaC::ex own_argument, other_argument;
+  };
+  SidePressure pressure_top_v, pressure_flank_v, pressure_top, pressure_flank;
 };
 
 // The forms above for g_top on [0, beta], g_flank on [beta, alpha]. `sample` gives every

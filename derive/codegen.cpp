@@ -38,9 +38,9 @@ enum class Op { Constant, Input, Add, Sub, Mul, Div, Neg, Sqrt, Call };
 struct Node {
   Op op;
   std::string text;  // Constant literal, Input name, or a Call's function and leading arguments
-  int a = -1, b = -1;
+  int a = -1, b = -1, c = -1, d = -1;  // operands; a Call's arguments (two or four)
   bool operator<(const Node& o) const {
-    return std::tie(op, text, a, b) < std::tie(o.op, o.text, o.a, o.b);
+    return std::tie(op, text, a, b, c, d) < std::tie(o.op, o.text, o.a, o.b, o.c, o.d);
   }
 };
 
@@ -94,12 +94,21 @@ class Graph {
       if (!inputs_.count(name)) throw std::invalid_argument("emit: symbol " + name + " is not an argument");
       return {false, intern({Op::Input, name})};
     }
-    if (GiNaC::is_a<GiNaC::function>(e) &&
-        GiNaC::ex_to<GiNaC::function>(e).get_name() == "quadratic_moment") {
-      // I_{j,l}(z) of the sub-interval moments: wavecontact/quadratic_moment.hpp.
+    if (GiNaC::is_a<GiNaC::function>(e) && (GiNaC::ex_to<GiNaC::function>(e).get_name() == "quadratic_moment" ||
+                                            GiNaC::ex_to<GiNaC::function>(e).get_name() == "edge_moment")) {
+      // I_{j,l}(z) or I'_{j,l}(z) of the sub-interval moments: wavecontact/quadratic_moment.hpp.
       std::ostringstream call;
-      call << "wavecontact::quadratic_moment<Scalar>(" << e.op(0) << ", " << e.op(1) << ", ";
+      call << "wavecontact::" << GiNaC::ex_to<GiNaC::function>(e).get_name() << "<Scalar>(" << e.op(0) << ", "
+           << e.op(1) << ", ";
       return {false, intern({Op::Call, call.str(), lower(e.op(2)), lower(e.op(3))})};
+    }
+    if (GiNaC::is_a<GiNaC::function>(e) && (GiNaC::ex_to<GiNaC::function>(e).get_name() == "two_factor_moment" ||
+                                            GiNaC::ex_to<GiNaC::function>(e).get_name() == "two_factor_edge_moment")) {
+      // J_{j,l}(y, z) or J'_{j,l}(y, z) of the sub-interval moments with a Cauchy factor: the same header.
+      std::ostringstream call;
+      call << "wavecontact::" << GiNaC::ex_to<GiNaC::function>(e).get_name() << "<Scalar>(" << e.op(0) << ", "
+           << e.op(1) << ", ";
+      return {false, intern({Op::Call, call.str(), lower(e.op(2)), lower(e.op(3)), lower(e.op(4)), lower(e.op(5))})};
     }
     if (GiNaC::is_a<GiNaC::add>(e)) return {false, lower_sum(e)};
     if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return lower_product(e);
@@ -262,8 +271,9 @@ class Printer {
 
   void count(int i) {
     if (uses_[i]++ > 0) return;
-    if (nodes_[i].a >= 0) count(nodes_[i].a);
-    if (nodes_[i].b >= 0) count(nodes_[i].b);
+    for (int operand : {nodes_[i].a, nodes_[i].b, nodes_[i].c, nodes_[i].d}) {
+      if (operand >= 0) count(operand);
+    }
   }
 
   static void tally(Op op, OpCounts& c) {
@@ -291,7 +301,10 @@ class Printer {
       case Op::Div: s = expression(n.a) + " / " + expression(n.b); break;
       case Op::Neg: return "-" + expression(n.a);
       case Op::Sqrt: return "sqrt(" + expression(n.a, true) + ")";
-      case Op::Call: return n.text + expression(n.a, true) + ", " + expression(n.b, true) + ")";
+      case Op::Call:
+        s = n.text + expression(n.a, true) + ", " + expression(n.b, true);
+        if (n.c >= 0) s += ", " + expression(n.c, true) + ", " + expression(n.d, true);
+        return s + ")";
     }
     return top ? s : "(" + s + ")";
   }
@@ -336,7 +349,7 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   os << "// Total ops: " << counts.total() << " (" << counts.additions << " add, "
      << counts.multiplications << " mul, " << counts.divisions << " div, "
      << counts.square_roots << " sqrt, " << counts.negations << " neg"
-     << (counts.calls > 0 ? ", " + std::to_string(counts.calls) + " quadratic_moment" : "") << "), "
+     << (counts.calls > 0 ? ", " + std::to_string(counts.calls) + " moment calls" : "") << "), "
      << counts.temporaries << " temporaries\n";
   os << "template <typename Scalar>\ninline " << (returns_value ? "Scalar " : "void ") << f.name << "(";
   for (std::size_t i = 0; i < f.arguments.size(); ++i) {

@@ -1,6 +1,7 @@
 #include "emit_common.hpp"
 
 #include "canonical.hpp"
+#include "symbols.hpp"
 #include "generate.hpp"
 
 namespace wavecontact::derive {
@@ -53,6 +54,60 @@ void write_moment_terms(std::ostream& os, const std::string& name, const std::ve
          << prefix << ".z = " << canonical_rational(terms[i].z) << "\n"
          << prefix << ".one_plus_z = " << canonical_rational(terms[i].one_plus_z) << "\n";
     }
+    if (terms[i].cauchy) {  // J_{j,l}(y, z): the Cauchy factor's argument
+      os << prefix << ".y = " << canonical_rational(terms[i].y) << "\n"
+         << prefix << ".one_plus_y = " << canonical_rational(terms[i].one_plus_y) << "\n";
+    }
+  }
+}
+
+std::vector<EmittedFunction> pressure_beyond_branch(const std::string& prefix, const BeyondBranch& b,
+                                                    const std::vector<GiNaC::ex>& point_arguments) {
+  std::vector<GiNaC::ex> zone_arguments;  // the point's arguments but Cx, Sx, D
+  for (const GiNaC::ex& a : point_arguments) {
+    if (!a.is_equal(sym::Cx()) && !a.is_equal(sym::Sx()) && !a.is_equal(sym::D())) zone_arguments.push_back(a);
+  }
+  std::vector<EmittedFunction> functions;
+  for (const bool top : {true, false}) {
+    const BeyondBranch::SidePressure& p = top ? b.pressure_top : b.pressure_flank;
+    const std::string name = prefix + (top ? "_top" : "_flank");
+    const std::string where = top ? "on the top branch (|x^| below the branch point)" : "on the flank (beyond the branch point)";
+    const std::string point = "Contact pressure p(x) " + where + " of a zone reaching beyond the branch point, eq. 12\n"
+                              "split there (derive/beyond_branch.hpp), in parts: ";
+    functions.push_back({name + "_own", point + "the own piece's moment (I_{j,l}).", point_arguments, as_ex(p.own)});
+    functions.push_back({name + "_own_edge", "The own piece's moment in I'_{j,l} (for " + name + "_own_argument < 0).",
+                         point_arguments, as_ex(p.own_edge)});
+    functions.push_back({name + "_other_cauchy",
+                         "The other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near\n"
+                         "the other branch's pole, where _other + _jump cancel.",
+                         point_arguments, as_ex(p.other_cauchy)});
+    functions.push_back({name + "_other_cauchy_edge", "The same in J'_{j,l} (for " + name + "_other_argument < 0).",
+                         point_arguments, as_ex(p.other_cauchy_edge)});
+    functions.push_back({name + "_other", "The other piece's moment with the other branch's value at x apart (I_{j,l}).",
+                         point_arguments, as_ex(p.other)});
+    functions.push_back({name + "_other_edge", "The same in I'_{j,l} (for " + name + "_other_argument < 0).",
+                         point_arguments, as_ex(p.other_edge)});
+    functions.push_back({name + "_jump", "The jump of the branches at x times the other piece's Cauchy moment.",
+                         point_arguments, as_ex(p.jump)});
+    functions.push_back({name + "_own_argument", "z of the own piece's pole factor: it selects the basis.",
+                         zone_arguments, p.own_argument});
+    functions.push_back({name + "_other_argument", "z of the other piece's pole factor.", zone_arguments,
+                         p.other_argument});
+  }
+  return functions;
+}
+
+void write_pressure_beyond_branch(std::ostream& os, const std::string& name, const BeyondBranch& b) {
+  for (const bool top : {true, false}) {
+    const BeyondBranch::SidePressure& p = top ? b.pressure_top_v : b.pressure_flank_v;
+    const std::string side = name + (top ? ".top" : ".flank");
+    write_moment_terms(os, side + ".own", p.own);
+    write_moment_terms(os, side + ".own_edge", p.own_edge);
+    write_moment_terms(os, side + ".other_cauchy", p.other_cauchy);
+    write_moment_terms(os, side + ".other_cauchy_edge", p.other_cauchy_edge);
+    write_moment_terms(os, side + ".other", p.other);
+    write_moment_terms(os, side + ".other_edge", p.other_edge);
+    write_moment_terms(os, side + ".jump", p.jump);
   }
 }
 

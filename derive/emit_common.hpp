@@ -8,6 +8,8 @@
 #include <ginac/ginac.h>
 
 #include "angle_form.hpp"
+#include "beyond_branch.hpp"
+#include "codegen.hpp"
 #include "radicals.hpp"
 #include "sub_interval.hpp"
 
@@ -27,7 +29,18 @@ void write_terms(std::ostream& os, const std::string& name, const std::vector<Ro
 void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum,
                const Radicals& radicals);
 
-// Manifest lines per term c sqrt(r) I_{j,l}(z): rational, radicand, and j, l, z, 1 + z.
+// Manifest lines per term c sqrt(r) I_{j,l}(z) or J_{j,l}(y, z): rational, radicand, and j, l, z,
+// 1 + z, and y, 1 + y.
 void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms);
+
+// The pressure beyond a change of branch (beyond_branch.hpp) as emitted functions
+// <prefix>_<side>_<part>, side top or flank, part own, own_edge, other_cauchy, other_cauchy_edge,
+// other, other_edge, jump (of `point_arguments`), own_argument and other_argument (of the
+// parameters, Ca and Sa).
+std::vector<EmittedFunction> pressure_beyond_branch(const std::string& prefix, const BeyondBranch& b,
+                                                    const std::vector<GiNaC::ex>& point_arguments);
+
+// Manifest lines of the same, v-forms, under `name`.
+void write_pressure_beyond_branch(std::ostream& os, const std::string& name, const BeyondBranch& b);
 
 }  // namespace wavecontact::derive

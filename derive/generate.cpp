@@ -88,7 +88,7 @@ std::string roughness_manifest(const std::vector<int>& ns) {
 std::string waviness_header(const WavinessDerivation& d) {
   const std::vector<ex> point_arguments{sym::E(),  sym::H1(), sym::b1(), sym::m(), sym::Ca(),
                                         sym::Sa(), sym::Cx(), sym::Sx(), sym::D()};
-  const std::vector<EmittedFunction> functions{
+  std::vector<EmittedFunction> functions{
       {"waviness_pressure_exact",
        "Exact contact pressure p(x) of the parametric wave curve (eq. 12 solved exactly;\n"
        "the exact counterpart of eq. 13/14), valid for |x| < a <= b1/2.",
@@ -135,6 +135,9 @@ std::string waviness_header(const WavinessDerivation& d) {
        "dY/dCx of waviness_height, Cx >= 0 (even in Cx): the contact solver's right-hand side.",
        {sym::H1(), sym::m(), sym::Cx()}, d.height_slope},
   };
+  for (const auto& f : pressure_beyond_branch("waviness_pressure_beyond_half", d.beyond_half, point_arguments)) {
+    functions.push_back(f);
+  }
 
   std::ostringstream os;
   os << banner("//", regeneration_command());
@@ -184,6 +187,7 @@ std::string manifest(const WavinessDerivation& d) {
   write_moment_terms(os, "waviness.load_slope_factor.by_parts", d.beyond_half.load_slope_factor_by_parts_v);
   write_moment_terms(os, "waviness.load_slope_factor.by_parts.angle", d.beyond_half.load_slope_factor_by_parts);
   write_moment_terms(os, "waviness.load.near_half.angle", d.beyond_half.load_near_branch_angle);
+  write_pressure_beyond_branch(os, "waviness.pressure.beyond_half", d.beyond_half);
   os << "waviness.top_piece_argument = " << canonical_rational(d.beyond_half.top_piece_argument) << "\n";
   os << "waviness.height = " << canonical_rational(d.height) << "\n";
   os << "waviness.height_slope = " << canonical_rational(d.height_slope) << "\n";

@@ -137,44 +137,16 @@ std::string harmonic_evaluators(const ProfileDerivation& d, bool rational) {
   return os.str();
 }
 
-// GiNaC::factor of a rational function, made the same on every run (it orders factors and
-// fixes their signs by hash values): each factor expanded with its sign fixed by its
-// canonical leading term.
-ex deterministic_factor(const ex& e) {
-  const ex nd = e.normal().numer_denom();
-  ex result = 1;
-  for (int direction : {1, -1}) {
-    const ex product = GiNaC::factor(nd.op(direction > 0 ? 0 : 1));
-    const std::vector<ex> parts = GiNaC::is_a<GiNaC::mul>(product) ? std::vector<ex>(product.begin(), product.end())
-                                                                   : std::vector<ex>{product};
-    for (const ex& part : parts) {
-      const bool power = GiNaC::is_a<GiNaC::power>(part);
-      ex base = (power ? part.op(0) : part).expand();
-      const long exponent = power ? GiNaC::ex_to<GiNaC::numeric>(part.op(1)).to_long() : 1;
-      if (GiNaC::is_a<GiNaC::add>(base) && leading_term_negative(base)) {
-        base = (-base).expand();
-        if (exponent % 2 != 0) result = -result;
-      }
-      result *= GiNaC::pow(base, direction * exponent);
-    }
-  }
-  return result;
-}
-
 // The evaluators of a profile built with abs() beyond its branch point (beyond_branch.hpp):
-// load and slope factor in their forms and the argument that selects them; g of each branch,
-// its divided difference (g(v) - g(u))/(v - u) with v - u divided out, and the jump
-// g_flank(u) - g_top(u) factored, for the quadrature of eq. 12 across the kink; the flank's
-// height, its slope and its poles.
+// load and slope factor in their forms and the argument that selects them; the pressure's parts
+// on either side of the branch point (emit_common.hpp) and g of each branch, whose ratio at the
+// point chooses among them; the flank's height, its slope and its poles.
 std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
   const std::string& name = d.spec.name;
   const BeyondBranch& b = d.beyond;
-  const ex v = sym::v(), u = sym::u();
+  const ex v = sym::v();
   const std::vector<ex> load = evaluator_arguments(d).load, height = evaluator_arguments(d).height;
   const std::vector<ex> argument = with_parameters({}, d, {sym::Ca(), sym::Sa()});
-  const auto divided_difference = [&](const ex& g) {
-    return deterministic_factor((g - g.subs(v == u)) / (v - u));
-  };
   std::vector<EmittedFunction> functions{
       {name + "_beyond_branch_load",
        "Load P (eq. 6) once the zone reaches beyond the branch point: the sub-interval moments of both\n"
@@ -196,15 +168,13 @@ std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
        load, as_ex(b.load_slope_factor_by_parts)},
       {name + "_top_g", "g(v) of eq. 5 on the top branch (|v| < beta).", with_parameters({sym::E()}, d, {v}), b.top_g},
       {name + "_flank_g", "g(v) of eq. 5 on the flank (|v| > beta).", with_parameters({sym::E()}, d, {v}), b.flank_g},
-      {name + "_top_divided_difference", "(g_top(v) - g_top(u))/(v - u), v - u divided out.",
-       with_parameters({sym::E()}, d, {v, u}), divided_difference(b.top_g)},
-      {name + "_flank_divided_difference", "(g_flank(v) - g_flank(u))/(v - u), v - u divided out.",
-       with_parameters({sym::E()}, d, {v, u}), divided_difference(b.flank_g)},
-      {name + "_branch_jump", "g_flank(u) - g_top(u), factored: it vanishes at u = +-beta without cancellation.",
-       with_parameters({sym::E()}, d, {u}), deterministic_factor((b.flank_g - b.top_g).subs(v == u))},
       {name + "_flank_height", "The flank's profile in Cx = cos x^ (Cx < the branch point's cosine).", height,
        d.flank_height},
       {name + "_flank_height_slope", "dY/dCx on the flank.", height, d.flank_height_slope}};
+  for (const EmittedFunction& f : pressure_beyond_branch(name + "_beyond_branch_pressure", b,
+                                                        evaluator_arguments(d).pressure)) {
+    functions.push_back(f);
+  }
   for (std::size_t i = 0; i < d.flank_pole_squares.size(); ++i) {
     functions.push_back({name + "_flank_pole_square_" + std::to_string(i),
                          "A pole v^2 of the flank's g; where real and > beta^2 the contact cannot reach it.",
@@ -249,13 +219,23 @@ std::string branch_adapters(const ProfileDerivation& d) {
                 E + "Ca, Sa")
      << adapter(d, "branch.top_g", "double E, double v", "top_g", E + "v")
      << adapter(d, "branch.flank_g", "double E, double v", "flank_g", E + "v")
-     << adapter(d, "branch.top_divided_difference", "double E, double v, double u", "top_divided_difference",
-                E + "v, u")
-     << adapter(d, "branch.flank_divided_difference", "double E, double v, double u",
-                "flank_divided_difference", E + "v, u")
-     << adapter(d, "branch.jump", "double E, double u", "branch_jump", E + "u")
      << adapter(d, "branch.flank_height", "double Cx", "flank_height", q + "Cx")
      << adapter(d, "branch.flank_height_slope", "double Cx", "flank_height_slope", q + "Cx");
+  const std::string unused = d.parameters.empty() ? "/*q*/" : "q";
+  const char* parts[] = {"own", "own_edge", "other_cauchy", "other_cauchy_edge", "other", "other_edge", "jump"};
+  for (int side = 0; side < 2; ++side) {
+    const std::string prefix = d.spec.name + "_beyond_branch_pressure_" + (side == 0 ? "top" : "flank") + "_";
+    for (int k = 0; k < 7; ++k) {
+      os << "  e.branch.pressure_parts[" << side << "][" << k << "] = [](const double* " << unused
+         << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D) {\n    return " << prefix
+         << parts[k] << "<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D);\n  };\n";
+    }
+    for (const char* argument : {"own_argument", "other_argument"}) {
+      os << "  e.branch." << argument << "[" << side << "] = [](const double* " << unused
+         << ", double Ca, double Sa) {\n    return " << prefix << argument << "<double>(0.0, 0.0, " << q
+         << "Ca, Sa);\n  };\n";
+    }
+  }
   const bool poles = !d.flank_pole_squares.empty();
   os << "  e.branch.flank_pole_squares = [](const double* " << (poles && !d.parameters.empty() ? "q" : "/*q*/")
      << ", double* " << (poles ? "tau" : "/*tau*/") << ") {\n";

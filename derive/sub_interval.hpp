@@ -25,13 +25,39 @@ namespace wavecontact::derive {
 // numerical evaluation at GiNaC::Digits (series for |z| <= 1/10, atan or atanh otherwise).
 DECLARE_FUNCTION_4P(quadratic_moment)
 
+// J_{j,l}(y, z) = Int_0^1 w^(2j)/((1 + y w^2)(1 + z w^2)^l) dw as two_factor_moment(j, l, y,
+// 1 + y, z, 1 + z): the atom where the integrand has a Cauchy factor 1/(t - s) (argument y)
+// beside a pole factor (argument z), the pressure's moments beyond a change of branch. Numerical
+// evaluation at GiNaC::Digits by partial fractions with the digits they cancel added, or by its
+// Taylor series in y - z where y and z nearly coincide.
+DECLARE_FUNCTION_6P(two_factor_moment)
+
+// I'_{j,l}(z) = Int_0^1 (1 - w^2)^j/(1 + z w^2)^l dw as edge_moment(j, l, z, 1 + z): the
+// moments in powers of 1 - w^2 (the runtime's wavecontact::edge_moment), which keep their digits
+// where z -> -1 (a pole just beyond the sub-interval's end) and the I_{j,l} all tend to one
+// value. Numerical evaluation from the I_{j,l} with the digits their sum cancels added.
+DECLARE_FUNCTION_4P(edge_moment)
+
+// J'_{j,l}(y, z) = Int_0^1 (1 - w^2)^j/((1 + y w^2)(1 + z w^2)^l) dw as two_factor_edge_moment(j,
+// l, y, 1 + y, z, 1 + z): the two-factor moment in the edge basis (the runtime's function of that
+// name). Numerical evaluation from the J_{i,l} with the digits their sum cancels added.
+DECLARE_FUNCTION_6P(two_factor_edge_moment)
+
 // One term c sqrt(r) I_{j,l}(z) of a sub-interval moment (c sqrt(r) alone if l = 0), c, r,
-// z and one_plus_z = 1 + z rational in sym::alpha() and the parameters.
+// z and one_plus_z = 1 + z rational in sym::alpha() and the parameters; with a Cauchy factor
+// (cauchy set, its argument y rational in sym::s() too), c sqrt(r) J_{j,l}(y, z); in the edge
+// basis (edge set), c sqrt(r) I'_{j,l}(z) or J'_{j,l}(y, z).
 struct MomentTerm {
   GiNaC::ex rational, radicand;
   int j = 0, l = 0;
   GiNaC::ex z, one_plus_z;
+  bool cauchy = false;
+  GiNaC::ex y, one_plus_y;
+  bool edge = false;
 };
+
+// A term without a Cauchy factor.
+MomentTerm moment_term(GiNaC::ex rational, GiNaC::ex radicand, int j, int l, GiNaC::ex z, GiNaC::ex one_plus_z);
 
 // The same moment where z -> +infinity (the sub-interval reaching the whole): for l > j,
 //   I_{j,l}(z) = K_{j,l} z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z),  K_{j,l} = Int_0^inf s^2j/(1+s^2)^l ds,
@@ -44,10 +70,12 @@ GiNaC::ex as_ex(const MomentTerm& term);
 GiNaC::ex as_ex(const std::vector<MomentTerm>& terms);
 
 // M_[0,beta][Phi] and M_[beta,alpha][Phi] for Phi rational in sym::t() (beta a symbol or a
-// number, 0 < beta < sym::alpha()), as sums of terms. Throws std::invalid_argument if Psi's
-// denominator has more than one factor depending on S.
-std::vector<MomentTerm> inner_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta);
-std::vector<MomentTerm> outer_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta);
+// number, 0 < beta < sym::alpha()), as sums of terms. Phi may have the Cauchy factor t - s
+// (sym::s() off the sub-interval) beside one pole factor. With edge_basis, the terms with a pole
+// factor are written in I'_{j,l} or J'_{j,l} (the numerator in powers of 1 - w^2). Throws
+// std::invalid_argument if Psi's denominator has any other factor depending on S.
+std::vector<MomentTerm> inner_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta, bool edge_basis = false);
+std::vector<MomentTerm> outer_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta, bool edge_basis = false);
 
 // Eq. 6 from the right-hand side g of eq. 5 alone (MATH.md fact 7 in v = tan(x^/2)):
 //   P = 2 pi sqrt(1 + alpha^2) M[v g(v)/(1 + v^2)],

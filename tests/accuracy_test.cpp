@@ -187,6 +187,56 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
   check(slope);
 }
 
+// The pressure beyond b1/2 in closed form (derive/beyond_branch.hpp: eq. 12 split at the kink,
+// J_{j,l} atoms) against the derived v-form at 40 digits (s = tan^2(pi x/(2 b1)) and
+// alpha = tan(pi a/(2 b1)) from the exact inputs), over m from 0 to 1e4, a from just above
+// b1/2 to b1 and x across the zone: at the centre, next to the kink x = b1/2 on either side,
+// around the other branch's pole (cos(pi x/b1) = +-1/m), where the runtime changes forms, and
+// at the edge. Beyond b1/2 the pressure of one zone may change sign (it is then not the
+// contact, see LoadCurve), so the error is taken relative to the largest |p| of the zone's
+// points.
+BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
+  wavecontact::test::Precision precision(wavecontact::test::reference_digits);
+  const auto& beyond = waviness().beyond_half;
+  ErrorReport top{"pressure, a > b1/2, |x| < b1/2"}, flank{"pressure, a > b1/2, |x| > b1/2"};
+  const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
+  std::size_t k = 0;
+  for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 35.0, 100.0, 1e3, 1e4}) {
+    for (double fa : {0.5000001, 0.501, 0.55, 0.6, 0.75, 0.9, 0.99, 0.9999}) {
+      const auto& [E, H1, b1] = scales[k++ % scales.size()];
+      const double a = fa * b1;
+      std::vector<double> xs{0, 0.2 * b1, 0.45 * b1, 0.5 * b1 * (1 - 1e-3), 0.5 * b1 * (1 - 1e-9),
+                             std::nextafter(0.5 * b1, 0.0), std::nextafter(0.5 * b1, b1), 0.5 * b1 * (1 + 1e-9),
+                             0.5 * b1 * (1 + 1e-3), (0.5 + fa) / 2 * b1, a * (1 - 1e-6), a * (1 - 1e-12)};
+      if (m > 1) {  // around the other branch's pole, cos(pi x/b1) = +-1/m
+        for (double side : {1.0, -1.0}) {
+          for (double shift : {0.0, 1e-6, -1e-6, 0.1, -0.1, 0.2, -0.2}) {
+            const double x = std::acos(side / m * (1 + shift)) / M_PI * b1;
+            if (std::isfinite(x) && x < a) xs.push_back(x);
+          }
+        }
+      }
+      const wavecontact::WavinessParams params{H1, b1, m, E};
+      std::vector<std::pair<PhysicalPoint, GiNaC::numeric>> references;
+      GiNaC::numeric scale = 0;
+      for (double x : xs) {
+        if (!(x < a) || x == 0.5 * b1) continue;
+        const PhysicalPoint p{E, H1, b1, m, a, x};
+        const auto& side = x < 0.5 * b1 ? beyond.pressure_top_v : beyond.pressure_flank_v;
+        const GiNaC::ex p_x = wavecontact::derive::as_ex(side.own) + wavecontact::derive::as_ex(side.other_cauchy);
+        references.emplace_back(p, GiNaC::ex_to<GiNaC::numeric>(p_x.subs(p.v_variables()).evalf()));
+        scale = std::max(scale, GiNaC::abs(references.back().second));
+      }
+      for (const auto& [p, reference] : references) {
+        const double error = (GiNaC::abs(wavecontact::test::exact(wavecontact::pressure(params, a, p.x)) - reference) / scale).to_double();
+        (p.x < 0.5 * b1 ? top : flank).add(error / 2.220446049250313e-16, p);
+      }
+    }
+  }
+  check(top);
+  check(flank);
+}
+
 BOOST_AUTO_TEST_CASE(inverse_of_load_round_trips) {
   ErrorReport report{"a(P(a))"};
   for (const auto& p : domain_points()) {

@@ -5,10 +5,14 @@
 // - the load's slope from g alone, (pi/2) sqrt(1 + alpha^2) M[(1 + v^2) g' + v g] sin(a^), is
 //   the derivative of the load, within the zone's top branch and beyond b1/2;
 // - the large-argument form of a moment equals the moment;
-// - beyond b1/2 the derived load in v-variables equals its angle form, and both forms of it.
+// - beyond b1/2 the derived load in v-variables equals its angle form, and both forms of it;
+// - beyond b1/2 the derived pressure, in each of its four assemblies (the other piece with its
+//   Cauchy factor or with the jump apart, each piece in I_{j,l} or the edge basis), is eq. 12 by
+//   an independent tanh-sinh quadrature at 50 digits, on both sides of the kink.
 #define BOOST_TEST_MODULE sub_interval
 #include <boost/test/unit_test.hpp>
 
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -59,7 +63,65 @@ ex slope_factor_of(const ex& load) {
   return load.diff(alpha) * GiNaC::pow(1 + alpha * alpha, 2) / (4 * alpha);
 }
 
+// Int_lo^hi f at GiNaC::Digits by the tanh-sinh rule, step 1/128, nodes until the weights fall
+// below 10^-(Digits + 5); 1 - tanh(s) = 2/(e^2s + 1) keeps the nodes next to the ends apart from
+// them.
+numeric tanh_sinh(const std::function<numeric(const numeric&)>& f, const numeric& lo, const numeric& hi) {
+  const numeric half = (hi - lo) / 2, h(1, 128);
+  const numeric pi_half = GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf());
+  const numeric small = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), numeric(-static_cast<long>(GiNaC::Digits) - 5)).evalf());
+  numeric sum = f(lo + half) * pi_half;  // t = 0: weight pi/2
+  for (int k = 1;; ++k) {
+    const numeric t = k * h, s = pi_half * GiNaC::sinh(t);
+    const numeric gap = 2 / (GiNaC::exp(2 * s) + 1);  // 1 - tanh(s)
+    const numeric weight = pi_half * GiNaC::cosh(t) / (GiNaC::cosh(s) * GiNaC::cosh(s));
+    if (weight < small) break;
+    sum += weight * (f(hi - half * gap) + f(lo + half * gap));
+  }
+  return sum * half * h;
+}
+
 }  // namespace
+
+BOOST_AUTO_TEST_CASE(pressure_beyond_half_is_eq12) {
+  const Digits digits(50);
+  const WavinessDerivation& d = waviness();
+  const GiNaC::symbol &v = sym::v(), &t = sym::t();
+  const ex s = sym::s();
+  const ex f_top = even_in_square(v * d.beyond_half.top_g, v, t);
+  const ex f_flank = even_in_square(v * d.beyond_half.flank_g, v, t);
+  for (const numeric& m : {numeric(1, 2), numeric(2), numeric(35)}) {
+    for (const numeric& alpha : {numeric(3, 2), numeric(3)}) {
+      for (const numeric& u : {numeric(1, 2), numeric(99, 100), numeric(5, 4)}) {
+        const bool on_top = u < 1;
+        // (f(t) - f(s))/(t - s) with t - s divided out where t and s lie on one branch.
+        const ex own = on_top ? f_top : f_flank;
+        const ex same = ((own - own.subs(t == s)) / (t - s)).normal().subs(s == u * u).subs(sym::m() == m);
+        const ex across = ((on_top ? f_flank : f_top) - own.subs(t == s)) / (t - s);
+        const ex other = across.subs(s == u * u).subs(sym::m() == m);
+        const GiNaC::exmap parameters{{sym::E(), numeric(3, 2)}, {sym::H1(), numeric(2, 3)}};
+        const auto integrand = [&](const numeric& theta) {  // v = alpha sin(theta)
+          const numeric sine = alpha * GiNaC::sin(theta), tt = sine * sine;
+          return GiNaC::ex_to<numeric>(((tt < 1) == on_top ? same : other).subs(parameters).subs(t == tt).evalf());
+        };
+        const numeric kink = GiNaC::asin(numeric(1) / alpha);
+        const numeric eq12 = GiNaC::sqrt(alpha * alpha - u * u) * 2 / GiNaC::ex_to<numeric>(GiNaC::Pi.evalf()) *
+                             (tanh_sinh(integrand, 0, kink) + tanh_sinh(integrand, kink, GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf())));
+        const auto& side = on_top ? d.beyond_half.pressure_top_v : d.beyond_half.pressure_flank_v;
+        GiNaC::exmap point{{sym::alpha(), alpha}, {sym::s(), u * u}, {sym::m(), m}, {sym::b1(), GiNaC::Pi}};
+        point.insert(parameters.begin(), parameters.end());
+        const std::string where = "m = " + text(m) + ", alpha = " + text(alpha) + ", u = " + text(u);
+        for (const bool edge : {false, true}) {
+          const ex own_piece = as_ex(edge ? side.own_edge : side.own);
+          const ex cauchy = own_piece + as_ex(edge ? side.other_cauchy_edge : side.other_cauchy);
+          const ex jump = own_piece + as_ex(edge ? side.other_edge : side.other) + as_ex(side.jump);
+          check_close(value(cauchy, point), eq12, "Cauchy factor kept, " + where);
+          check_close(value(jump, point), eq12, "jump apart, " + where);
+        }
+      }
+    }
+  }
+}
 
 BOOST_AUTO_TEST_CASE(pieces_add_up_to_the_whole_moment) {
   const Digits digits(40);
@@ -122,7 +184,7 @@ BOOST_AUTO_TEST_CASE(load_slope_from_g_alone_is_the_loads_derivative) {
 
 BOOST_AUTO_TEST_CASE(large_argument_form_is_the_moment) {
   const Digits digits(40);
-  const MomentTerm term{numeric(3, 7), 1 + sym::alpha(), 1, 2, sym::alpha() * 5, 1 + sym::alpha() * 5};
+  const MomentTerm term = moment_term(numeric(3, 7), 1 + sym::alpha(), 1, 2, sym::alpha() * 5, 1 + sym::alpha() * 5);
   for (const numeric& alpha : {numeric(1, 3), numeric(2), numeric(50)}) {
     const GiNaC::exmap point{{sym::alpha(), alpha}};
     check_close(value(as_ex(large_argument_form(term)), point), value(as_ex(term), point),

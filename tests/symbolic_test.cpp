@@ -248,6 +248,9 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
       derived[prefix + ".l"] = terms[i].l;
       derived[prefix + ".z"] = terms[i].z;
       derived[prefix + ".one_plus_z"] = terms[i].one_plus_z;
+      if (!terms[i].cauchy) continue;
+      derived[prefix + ".y"] = terms[i].y;
+      derived[prefix + ".one_plus_y"] = terms[i].one_plus_y;
     }
   };
   add_moments("waviness.load.beyond_half", d.beyond_half.load_v);
@@ -256,6 +259,17 @@ BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
   add_moments("waviness.load.near_half.angle", d.beyond_half.load_near_branch_angle);
   add_moments("waviness.load_slope_factor.by_parts", d.beyond_half.load_slope_factor_by_parts_v);
   add_moments("waviness.load_slope_factor.by_parts.angle", d.beyond_half.load_slope_factor_by_parts);
+  for (const bool top : {true, false}) {
+    const auto& side = top ? d.beyond_half.pressure_top_v : d.beyond_half.pressure_flank_v;
+    const std::string name = std::string("waviness.pressure.beyond_half.") + (top ? "top" : "flank");
+    add_moments(name + ".own", side.own);
+    add_moments(name + ".own_edge", side.own_edge);
+    add_moments(name + ".other_cauchy", side.other_cauchy);
+    add_moments(name + ".other_cauchy_edge", side.other_cauchy_edge);
+    add_moments(name + ".other", side.other);
+    add_moments(name + ".other_edge", side.other_edge);
+    add_moments(name + ".jump", side.jump);
+  }
 
   std::ifstream manifest(WAVECONTACT_SOURCE_DIR "/generated/manifest.txt");
   BOOST_TEST_REQUIRE(manifest.good());

@@ -2,48 +2,48 @@
 
 #include <cmath>
 
+#include "waviness.hpp"  // generated/
+
 namespace wavecontact::detail {
 
 namespace {
 
-// g(v) of eq. 5 for the curve of eq. 2 (normalised) on one branch: (m+1) N(v)/q(v)^2 with
-// N = v (1 + v^2) and q = c0 + c1 v^2, the top (|v| <= 1, cos x^ >= 0: c0 = 1 + m,
-// c1 = 1 - m) or the flank (c0 = 1 - m, c1 = 1 + m), each continued off its own side.
-struct Branch {
-  double m, c0, c1;
-
-  double q(double v) const { return c0 + c1 * v * v; }
-  double g(double v) const {
-    const double qv = q(v);
-    return (m + 1) * v * (1 + v * v) / (qv * qv);
-  }
-  // (g(v) - g(u))/(v - u) with the factor v - u divided out of the numerator: no digits lost
-  // as v -> u. N(v) q(u)^2 - N(u) q(v)^2 = (v - u) [q(u)^2 (v^2 + uv + u^2 + 1)
-  // - N(u) c1 (v + u)(q(v) + q(u))].
-  double divided_difference(double v, double u) const {
-    const double qv = q(v), qu = q(u);
-    const double numerator = qu * qu * (v * v + u * v + u * u + 1) - u * (1 + u * u) * c1 * (v + u) * (qv + qu);
-    return (m + 1) * numerator / (qv * qv * qu * qu);
-  }
+// The emitted parts of the pressure on one side of the kink, in the order of BranchPart.
+using PointForm = double (*)(const double&, const double&, const double&, const double&, const double&, const double&,
+                             const double&, const double&, const double&);
+using ZoneForm = double (*)(const double&, const double&, const double&, const double&, const double&, const double&);
+struct SideForms {
+  PointForm parts[7];
+  ZoneForm own_argument, other_argument;
 };
+
+#define WAVECONTACT_SIDE(side)                                                                              \
+  SideForms {                                                                                               \
+    {generated::waviness_pressure_beyond_half_##side##_own<double>,                                         \
+     generated::waviness_pressure_beyond_half_##side##_own_edge<double>,                                    \
+     generated::waviness_pressure_beyond_half_##side##_other_cauchy<double>,                                \
+     generated::waviness_pressure_beyond_half_##side##_other_cauchy_edge<double>,                           \
+     generated::waviness_pressure_beyond_half_##side##_other<double>,                                       \
+     generated::waviness_pressure_beyond_half_##side##_other_edge<double>,                                  \
+     generated::waviness_pressure_beyond_half_##side##_jump<double>},                                       \
+        generated::waviness_pressure_beyond_half_##side##_own_argument<double>,                             \
+        generated::waviness_pressure_beyond_half_##side##_other_argument<double>                            \
+  }
+constexpr SideForms top_forms = WAVECONTACT_SIDE(top), flank_forms = WAVECONTACT_SIDE(flank);
+#undef WAVECONTACT_SIDE
 
 }  // namespace
 
-double periodic_pressure(double m, HalfAngles zone, HalfAngles point, double D) {
-  const Branch top{m, 1 + m, 1 - m}, flank{m, 1 - m, 1 + m};
-  const PiecewiseDividedDifference divided_difference{
-      1,
-      [&](double v) { return top.g(v); },
-      [&](double v) { return flank.g(v); },
-      [&](double v, double u) { return top.divided_difference(v, u); },
-      [&](double v, double u) { return flank.divided_difference(v, u); },
-      // (m+1) N(u) (q_top^2 - q_flank^2)/(q_top q_flank)^2, q_top - q_flank = 2m (1 - u^2)
-      // without cancellation.
-      [&](double u) {
-        const double qt = top.q(u), qf = flank.q(u), a = std::fabs(u);
-        return (m + 1) * u * (1 + u * u) * 2 * m * (1 - a) * (1 + a) * (qt + qf) / (qt * qt * qf * qf);
-      }};
-  return kinked_pressure(divided_difference, 1, zone, point, D);
+double pressure_beyond_half(const WavinessParams& p, const ZoneAngles& zone, const PointAngles& point) {
+  const SideForms& forms = point.Cx >= 0 ? top_forms : flank_forms;
+  const auto part = [&](BranchPart which) {
+    return forms.parts[static_cast<int>(which)](p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
+  };
+  const auto argument = [&](ZoneForm f) { return f(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa); };
+  // g_other/g_own = ((1 + m|Cx|)/(1 - m|Cx|))^2 (the other branch's pole at |Cx| = 1/m).
+  const double mc = p.m * std::fabs(point.Cx);
+  return beyond_branch_pressure(part, argument(forms.own_argument), argument(forms.other_argument),
+                                (1 + mc) * (1 + mc) / ((1 - mc) * (1 - mc)), point.Cx == 0);
 }
 
 }  // namespace wavecontact::detail

@@ -1,10 +1,8 @@
 // The parametric wave curve beyond a = b1/2 (the "periodic regime" of the seed's Fig. 5b):
 // the zone reaches the |cos| branch of eq. 2, so the right-hand side of eq. 5 is
 //   g(v) = E* H1 (m+1) v (1+v^2) / (1 + v^2 + m |1 - v^2|)^2,
-// piecewise rational with a kink in its slope at v = +-1 (cos x^ = 0). The pressure is
-// evaluated by the quadrature of kinked_inversion.hpp. Normalised: b1 = pi, H1 = E* = 1;
-// angles are passed as half-angle sines and cosines so that nothing cancels. The load and
-// its slope have closed forms (derive/sub_interval.hpp).
+// piecewise rational with a kink in its slope at v = +-1 (cos x^ = 0). The pressure, the load
+// and its slope have closed forms (derive/beyond_branch.hpp, derive/sub_interval.hpp).
 #pragma once
 
 #include "kinked_inversion.hpp"
@@ -13,9 +11,9 @@
 
 namespace wavecontact::detail {
 
-// p^(x^) of eq. 12 for the zone `zone` at the point with half-angles `point`,
-// 0 <= x^ < a^. D = cos x^ - cos a^ (computed without cancellation by the caller).
-double periodic_pressure(double m, HalfAngles zone, HalfAngles point, double D);
+// p(x) in physical units from the closed forms (generated/waviness.hpp), for b1/2 < a < b1 and
+// a point 0 <= x^ < a^.
+double pressure_beyond_half(const WavinessParams& params, const ZoneAngles& zone, const PointAngles& point);
 
 // F = dP/dSa - dP/dCa of the exact load, 0 < a <= b1, from the closed forms on either side of
 // b1/2 (generated/waviness.hpp): dP/da = (pi/b1) sin(pi a/b1) F (waviness.cpp).

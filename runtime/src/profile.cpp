@@ -39,13 +39,23 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
+bool branch_pressure_complete(const BranchEvaluators& b) {
+  for (int side = 0; side < 2; ++side) {
+    if (!b.own_argument[side] || !b.other_argument[side]) return false;
+    for (const auto part : b.pressure_parts[side]) {
+      if (!part) return false;
+    }
+  }
+  return true;
+}
+
 void register_profile(const ProfileEvaluator& evaluator) {
   const BranchEvaluators& b = evaluator.branch;
   const bool branch_complete =
       b.beta == 0 || (b.beta > 0 && std::isfinite(b.beta) && b.cosine > -1 && b.cosine < 1 && b.load &&
                       b.load_near_branch && b.top_piece_argument && b.load_slope_factor &&
-                      b.load_slope_factor_by_parts && b.top_g && b.flank_g && b.top_divided_difference &&
-                      b.flank_divided_difference && b.jump && b.flank_height && b.flank_height_slope &&
+                      b.load_slope_factor_by_parts && b.top_g && b.flank_g && b.flank_height && b.flank_height_slope &&
+                      branch_pressure_complete(b) &&
                       b.flank_pole_squares && b.flank_pole_count >= 0);
   if (evaluator.name.empty() || !evaluator.pressure || !evaluator.load ||
       !evaluator.load_slope_factor || !evaluator.height || !evaluator.height_slope ||
@@ -152,19 +162,18 @@ double Profile::pressure(double a, double x) const {
   if (beyond_branch(zone.Ca)) {
     const BranchEvaluators& b = evaluator_.branch;
     const double* q = q_.data();
-    const double E = params_.E;
-    const detail::PiecewiseDividedDifference divided_difference{
-        b.beta,
-        [&](double v) { return b.top_g(q, E, v); },
-        [&](double v) { return b.flank_g(q, E, v); },
-        [&](double v, double u) { return b.top_divided_difference(q, E, v, u); },
-        [&](double v, double u) { return b.flank_divided_difference(q, E, v, u); },
-        [&](double u) { return b.jump(q, E, u); }};
-    const auto half_angles = [&](double x) {
-      return detail::HalfAngles{boost::math::sin_pi(x / (2 * params_.b1)), boost::math::cos_pi(x / (2 * params_.b1))};
+    const int side = point.Cx >= b.cosine ? 0 : 1;
+    const double u = boost::math::sin_pi(y / (2 * params_.b1)) / boost::math::cos_pi(y / (2 * params_.b1));
+    const double g_top = b.top_g(q, params_.E, u), g_flank = b.flank_g(q, params_.E, u);
+    const double g_own = side == 0 ? g_top : g_flank, g_other = side == 0 ? g_flank : g_top;
+    const auto part = [&](detail::BranchPart which) {
+      return b.pressure_parts[side][static_cast<int>(which)](q, params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx,
+                                                              point.Sx, point.D);
     };
-    return pi / params_.b1 *
-           detail::kinked_pressure(divided_difference, b.beta, half_angles(a), half_angles(y), point.D);
+    return detail::beyond_branch_pressure(part, b.own_argument[side](q, zone.Ca, zone.Sa),
+                                          b.other_argument[side](q, zone.Ca, zone.Sa),
+                                          g_own == 0 ? 0.0 : g_other / g_own,  // g = 0 at x = 0 only
+                                          point.Cx == b.cosine);
   }
   return evaluator_.pressure(q_.data(), params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx,
                              point.Sx, point.D);

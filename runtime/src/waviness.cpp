@@ -45,19 +45,12 @@ void require_half_width(const char* function, const WavinessParams& p, double a,
   }
 }
 
-detail::HalfAngles half_angles(double x, double b1) {
-  return {boost::math::sin_pi(x / (2 * b1)), boost::math::cos_pi(x / (2 * b1))};
-}
-
 double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x,
                    Form form) {
   const double r = std::fabs(reduce_to_period(x, p.b1));
   if (r >= a) return 0;
   const PointAngles point = point_angles(r, a, p.b1);
-  if (form == Form::exact && a > p.b1 / 2) {
-    return pi / p.b1 * p.E * p.H1 *
-           detail::periodic_pressure(p.m, half_angles(a, p.b1), half_angles(r, p.b1), point.D);
-  }
+  if (form == Form::exact && a > p.b1 / 2) return detail::pressure_beyond_half(p, zone, point);
   return form == Form::exact
              ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa,
                                                   point.Cx, point.Sx, point.D)
@@ -65,8 +58,9 @@ double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, do
                                                   point.Cx, point.Sx, point.D);
 }
 
-// Beyond b1/2 the exact form needs the quadrature; the printed one continues its closed form.
-bool periodic_quadrature(const WavinessParams& p, double a, Form form) {
+// Beyond b1/2 the exact form is the closed forms with J_{j,l} atoms, point by point (about a
+// microsecond: no array kernel); the printed one continues its closed form.
+bool beyond_half_exact(const WavinessParams& p, double a, Form form) {
   return form == Form::exact && a > p.b1 / 2;
 }
 
@@ -87,11 +81,11 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
   require_half_width(function, params, a, form);
   detail::require_points(function, x, p.size());
   const ZoneAngles zone = zone_angles(a, params.b1);
-  const bool simd = !periodic_quadrature(params, a, form) && detail::simd_pressure_available();
+  const bool simd = !beyond_half_exact(params, a, form) && detail::simd_pressure_available();
   const detail::WavinessZone simd_zone{params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa};
   const double* xs = x.data();
   double* ps = p.data();
-  const std::size_t min_points = periodic_quadrature(params, a, form) ? parallel_points_costly : parallel_points;
+  const std::size_t min_points = beyond_half_exact(params, a, form) ? parallel_points_costly : parallel_points;
   detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, min_points,
                          [&](std::size_t begin, std::size_t end) {
     if (simd) {

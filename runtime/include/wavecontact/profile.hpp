@@ -31,9 +31,15 @@ struct BranchEvaluators {
   double (*load_slope_factor_by_parts)(const double* q, double E, double Ca, double Sa) = nullptr;
   double (*top_g)(const double* q, double E, double v) = nullptr;
   double (*flank_g)(const double* q, double E, double v) = nullptr;
-  double (*top_divided_difference)(const double* q, double E, double v, double u) = nullptr;
-  double (*flank_divided_difference)(const double* q, double E, double v, double u) = nullptr;
-  double (*jump)(const double* q, double E, double u) = nullptr;
+  // The closed-form pressure beyond the branch point on each side (0: the top, Cx above
+  // `cosine`; 1: the flank), in parts: own, own_edge, other_cauchy, other_cauchy_edge, other,
+  // other_edge, jump (derive/beyond_branch.hpp); and each piece's pole argument, which selects
+  // the basis.
+  using PressurePart = double (*)(const double* q, double E, double b1, double Ca, double Sa, double Cx, double Sx,
+                                  double D);
+  PressurePart pressure_parts[2][7] = {};
+  double (*own_argument[2])(const double* q, double Ca, double Sa) = {};
+  double (*other_argument[2])(const double* q, double Ca, double Sa) = {};
   double (*flank_height)(const double* q, double Cx) = nullptr;
   double (*flank_height_slope)(const double* q, double Cx) = nullptr;
   // The poles tau_i = tan^2(x^_i/2) of the flank's g that depend on the parameters.
