@@ -14,6 +14,7 @@
 #include "generate.hpp"   // derive/
 #include "plain_kernel.hpp"
 #include "roughness.hpp"  // derive/
+#include "kinked_reference.hpp"  // tests/
 #include "waviness.hpp"  // generated/
 #include "waviness_csrc.hpp"
 #include "wavecontact/angles.hpp"
@@ -231,33 +232,51 @@ BENCHMARK(BM_load);
 void BM_load_beyond_half(benchmark::State& state) { load_sweep(state, 5.01, 9.9); }
 BENCHMARK(BM_load_beyond_half);
 
-// The pressure beyond b1/2 (a = 0.75 b1), still by quadrature (periodic_regime.hpp): over the
-// zone, and within 1e-2 to 1e-12 (relative) of the kink at x = b1/2, on both sides.
-void pressure_points(benchmark::State& state, const std::vector<double>& xs) {
+// The pressure beyond b1/2 (a = 0.75 b1, m = 2), in closed form (derive/beyond_branch.hpp): over
+// the zone, and within 1e-2 to 1e-12 (relative) of the kink at x = b1/2, on both sides; and,
+// for the ratio, the independent quadrature of eq. 12 that the tests take as the reference
+// (tests/kinked_reference.hpp, long double).
+std::vector<double> points_over_zone() {
+  std::vector<double> xs;
+  for (int i = 0; i < 100; ++i) xs.push_back(7.5 * (i + 0.5) / 100);
+  return xs;
+}
+
+std::vector<double> points_near_kink() {
+  std::vector<double> xs;
+  for (int k = 2; k <= 12; ++k) {
+    for (double side : {-1.0, 1.0}) xs.push_back(5 * (1 + side * std::pow(10.0, -k)));
+  }
+  return xs;
+}
+
+void pressure_points(benchmark::State& state, const std::vector<double>& xs, bool quadrature) {
   const double a = 7.5;
   for (auto _ : state) {
     double sum = 0;
-    for (double x : xs) sum += pressure(waviness, a, x);
+    for (double x : xs) {
+      sum += quadrature ? static_cast<double>(wave_curve_reference_pressure(waviness.m, pi * a / waviness.b1,
+                                                                            pi * x / waviness.b1))
+                        : pressure(waviness, a, x);
+    }
     benchmark::DoNotOptimize(sum);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(xs.size()));
 }
 
-void BM_pressure_beyond_half(benchmark::State& state) {
-  std::vector<double> xs;
-  for (int i = 0; i < 100; ++i) xs.push_back(7.5 * (i + 0.5) / 100);
-  pressure_points(state, xs);
-}
+void BM_pressure_beyond_half(benchmark::State& state) { pressure_points(state, points_over_zone(), false); }
 BENCHMARK(BM_pressure_beyond_half);
 
-void BM_pressure_beyond_half_near_kink(benchmark::State& state) {
-  std::vector<double> xs;
-  for (int k = 2; k <= 12; ++k) {
-    for (double side : {-1.0, 1.0}) xs.push_back(5 * (1 + side * std::pow(10.0, -k)));
-  }
-  pressure_points(state, xs);
-}
+void BM_pressure_beyond_half_near_kink(benchmark::State& state) { pressure_points(state, points_near_kink(), false); }
 BENCHMARK(BM_pressure_beyond_half_near_kink);
+
+void BM_pressure_beyond_half_quadrature(benchmark::State& state) { pressure_points(state, points_over_zone(), true); }
+BENCHMARK(BM_pressure_beyond_half_quadrature)->Unit(benchmark::kMicrosecond);
+
+void BM_pressure_beyond_half_near_kink_quadrature(benchmark::State& state) {
+  pressure_points(state, points_near_kink(), true);
+}
+BENCHMARK(BM_pressure_beyond_half_near_kink_quadrature)->Unit(benchmark::kMicrosecond);
 
 // a(P) in the single-asperity regime (a <= b1/2): the closed-form inverse.
 void BM_single_asperity_half_width(benchmark::State& state) {

@@ -4,10 +4,9 @@
 //
 // Eq. 12 in x-space with sin(xi/2) = sin(a/2) sin(phi), which removes the edge singularities,
 //   p(x) = sqrt(cos x - cos a)/(sqrt2 pi) Int_{-pi/2}^{pi/2} (G(xi) - G(x))/(cos(xi/2) sin((xi - x)/2)) dphi,
-// G = -(E*/2) y' (both branches), in long double with a 61-point Gauss-Kronrod rule: a
-// different variable, rule and precision from the runtime's (v = alpha cos theta, 31 points,
-// double). Pieces: x, the kinks, and near the kink pieces graded from |x - kink|, over which
-// the quotient changes across it.
+// G = -(E*/2) y' (both branches), in long double with a 61-point Gauss-Kronrod rule: nothing
+// shared with the runtime's closed forms. Pieces: x, the kinks, and near the kink pieces graded
+// from |x - kink|, over which the quotient changes across it. Also the benchmarks' baseline.
 #pragma once
 
 #include <algorithm>
@@ -63,4 +62,18 @@ long double kinked_reference_pressure(const G_t& G_on, const G_prime_t& G_prime,
                       half > 1e-6L ? 10 : 3, 1e-15L);
   }
   return sqrt(cos(x) - cos(a)) / (sqrt(2.0L) * pi) * sum;
+}
+
+// The reference for eq. 2: G(xi) = (m+1) sin(xi)/(2 (1 + m |cos xi|)^2), eq. 2 differentiated,
+// both branches, with the kink at pi/2.
+inline long double wave_curve_reference_pressure(long double m, long double a, long double x) {
+  const auto G = [&](long double xi, int branch) {
+    const long double q = 1 + m * branch * std::cos(xi);
+    return (m + 1) * std::sin(xi) / (2 * q * q);
+  };
+  const auto G_prime = [&](long double xi, int branch) {
+    const long double q = 1 + m * branch * std::cos(xi), dq = -m * branch * std::sin(xi);
+    return (m + 1) * (std::cos(xi) * q - 2 * std::sin(xi) * dq) / (2 * q * q * q);
+  };
+  return kinked_reference_pressure(G, G_prime, 3.141592653589793238462643383279502884L / 2, a, x);
 }
