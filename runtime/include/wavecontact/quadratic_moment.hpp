@@ -164,15 +164,35 @@ Scalar edge_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
 
 namespace detail {
 
+// E_N = (1+x)^(L+N) I_{j+N,L+N}(x) for the backward recurrence. Where it contracts by at most
+// 0.7 a step (|x|/(1+x) <= 0.7), from E_M ~ (1+x)/(2M) (the integrand concentrates at w = 1 as M
+// grows; relative error O(1/M)) at the M > N where the product of the factors a_n falls below
+// 1e-18 (Miller's way: the start's error dies out on the way down); elsewhere from the series.
+template <typename Scalar>
+Scalar diagonal_start(int j, int L, int N, const Scalar& x, const Scalar& one_plus_x) {
+  using std::fabs;
+  using std::pow;
+  if (fabs(x) > Scalar(0.7) * one_plus_x) return quadratic_moment(j + N, L + N, x, one_plus_x) * pow(one_plus_x, L + N);
+  const Scalar ratio = x / one_plus_x;
+  int M = N;
+  for (double product = 1; product > 1e-18 && M < N + 4000; ++M) {
+    product *= static_cast<double>(fabs(Scalar(2 * (L + M)) * ratio / Scalar(2 * (j + M) + 1)));
+  }
+  Scalar E = one_plus_x / Scalar(2 * (j + M) + 1);
+  for (int n = M - 1; n >= N; --n) E = (Scalar(2 * (L + n)) * ratio * E + 1) * (Scalar(1) / Scalar(2 * (j + n) + 1));
+  return E;
+}
+
 // sum_n C(k+n-1, n) rho^n E_n (1+x)^-L, E_n = (1+x)^(L+n) I_{j+n,L+n}(x), |rho| < 1: the
 // expansion of Int_0^1 w^2j (1 + x w^2)^-L (1 - rho (1+x) w^2/(1 + x w^2))^-k dw in the ratio
 // rho (1+x) w^2/(1 + x w^2), at most |rho| in size. The diagonal E_n follows from integrating
 // d/dw [w^(2i+1)/(1 + x w^2)^L'] by parts,
 //   (2i+1) I_{i,L'} - 2L'x I_{i+1,L'+1} = (1+x)^-L',
-// that is E_n = (1 + a_n E_(n+1) (2(j+n)+1)/... ) with the factor a_n = 2(L+n)x/((1+x)(2(j+n)+1))
-// on E_(n+1): forwards from E_0 while |a_n| >= 1 and backwards from E_N below that, each in the
-// direction in which the recurrence does not amplify (0 < E_n <= 1: its integrand is
-// w^(2j+2n) ((1+x)/(1 + x w^2))^(L+n) <= 1).
+// that is E_n = (1 + 2(L+n) x/(1+x) E_(n+1))/(2(j+n)+1), the factor a_n = 2(L+n)x/((1+x)(2(j+n)+1))
+// on E_(n+1): forwards from E_0 while |a_n| >= 1 and backwards from E_N (diagonal_start) where
+// it is below, each in the direction in which the recurrence does not amplify (0 < E_n <= 1: its
+// integrand is w^(2j+2n) ((1+x)/(1 + x w^2))^(L+n) <= 1). The divisions by the indices are
+// reciprocals off the chain of the recurrence, which then runs on multiplications alone.
 template <typename Scalar>
 Scalar diagonal_series(int j, int L, int k, const Scalar& x, const Scalar& one_plus_x, const Scalar& rho) {
   using std::fabs;
@@ -190,17 +210,19 @@ Scalar diagonal_series(int j, int L, int k, const Scalar& x, const Scalar& one_p
   while (split < N && amplification(split) >= 1) ++split;
   Scalar sum = 0, power = 1;  // power = C_n rho^n
   if (split > 0) {
+    const Scalar inverse_ratio = one_plus_x / x;
     Scalar E = quadratic_moment(j, L, x, one_plus_x) * pow(one_plus_x, L);
     for (int n = 0; n < split; ++n) {
       sum += power * E;
-      E = one_plus_x * (Scalar(2 * (j + n) + 1) * E - 1) / (Scalar(2 * (L + n)) * x);
+      E = (Scalar(2 * (j + n) + 1) * E - 1) * (inverse_ratio / Scalar(2 * (L + n)));
       power *= rho * coefficient(n + 1);
     }
   }
   if (split < N) {  // sum_{n >= split} C_n rho^n E_n = C_split rho^split (E_split + rho C_(split+1)/C_split (...))
-    Scalar E = quadratic_moment(j + N, L + N, x, one_plus_x) * pow(one_plus_x, L + N), tail = E;
+    Scalar E = diagonal_start(j, L, N, x, one_plus_x), tail = E;
+    const Scalar ratio = x / one_plus_x;
     for (int n = N - 1; n >= split; --n) {
-      E = (Scalar(2 * (L + n)) * x * E / one_plus_x + 1) / Scalar(2 * (j + n) + 1);
+      E = (Scalar(2 * (L + n)) * ratio * E + 1) * (Scalar(1) / Scalar(2 * (j + n) + 1));
       tail = E + rho * coefficient(n + 1) * tail;
     }
     sum += power * tail;
