@@ -35,17 +35,22 @@ numeric quadratic_moment_value(int j, int l, const numeric& z) {
     }
   }
   if (l == 0) return numeric(1, 2 * j + 1);
-  if (j > 0) {
-    return (quadratic_moment_value(j - 1, l - 1, z) - quadratic_moment_value(j - 1, l, z)) / z;
-  }
+  // I_{0,l'} for l' <= l (atan or atanh, then up in l'), then row by row
+  // I_{i,l'} = (I_{i-1,l'-1} - I_{i-1,l'})/z, I_{i,0} = 1/(2i+1): O(j l) values.
   const numeric root = GiNaC::sqrt(GiNaC::abs(z));
-  numeric moment = z.is_positive() ? GiNaC::atan(root) / root : GiNaC::atanh(root) / root;
+  std::vector<numeric> row(l + 1);
+  row[0] = 1;
+  if (l >= 1) row[1] = z.is_positive() ? GiNaC::atan(root) / root : GiNaC::atanh(root) / root;
   numeric power = 1;
-  for (int k = 1; k < l; ++k) {
+  for (int k = 1; k + 1 <= l; ++k) {
     power *= 1 + z;
-    moment = 1 / (2 * k * power) + numeric(2 * k - 1, 2 * k) * moment;
+    row[k + 1] = 1 / (2 * k * power) + numeric(2 * k - 1, 2 * k) * row[k];
   }
-  return moment;
+  for (int i = 1; i <= j; ++i) {
+    for (int k = l; k >= 1; --k) row[k] = (row[k - 1] - row[k]) / z;
+    row[0] = numeric(1, 2 * i + 1);
+  }
+  return row[l];
 }
 
 // GiNaC evaluates the arguments first: j and l arrive as floats.
