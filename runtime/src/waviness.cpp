@@ -8,7 +8,6 @@
 #include <utility>
 
 #include <boost/math/constants/constants.hpp>
-#include <boost/math/special_functions/cos_pi.hpp>
 #include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/tools/roots.hpp>
 
