@@ -37,8 +37,7 @@ std::string joined(const std::vector<std::string>& names) {
   return list.empty() ? "(none)" : list;
 }
 
-}  // namespace
-
+// Every part of the closed-form pressure beyond the branch point is there.
 bool branch_pressure_complete(const BranchEvaluators& b) {
   for (int side = 0; side < 2; ++side) {
     if (!b.own_argument[side] || !b.other_argument[side]) return false;
@@ -48,6 +47,8 @@ bool branch_pressure_complete(const BranchEvaluators& b) {
   }
   return true;
 }
+
+}  // namespace
 
 void register_profile(const ProfileEvaluator& evaluator) {
   const BranchEvaluators& b = evaluator.branch;
