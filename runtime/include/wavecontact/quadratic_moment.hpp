@@ -18,12 +18,27 @@
 #pragma once
 
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace wavecontact {
 
 namespace detail {
+
+// Throws std::domain_error "wavecontact::<function>: j = .., l = .., <name> = <value>, ... are
+// invalid (valid: <valid>)".
+[[noreturn]] inline void invalid_arguments(const char* function, int j, int l,
+                                           std::initializer_list<std::pair<const char*, double>> arguments,
+                                           const char* valid) {
+  std::ostringstream os;
+  os.precision(17);
+  os << "wavecontact::" << function << ": j = " << j << ", l = " << l;
+  for (const auto& [name, value] : arguments) os << ", " << name << " = " << value;
+  os << " are invalid (valid: " << valid << ")";
+  throw std::domain_error(os.str());
+}
 
 // sum_k C(l+k-1, k) x^k c_k with c_0 = 1/(2j+1) and c_k = c_{k-1} ratio(k), to the last bit:
 // the number of terms from a forward pass, then the nested form
@@ -91,12 +106,9 @@ template <typename Scalar>
 Scalar quadratic_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   // z itself may round to -1 where 1 + z, given apart, does not vanish (m ~ 1e17 and beyond).
   if (!(z >= -1) || !(one_plus_z > 0) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "wavecontact::quadratic_moment: j = " << j << ", l = " << l << ", z = "
-       << static_cast<double>(z) << ", 1 + z = " << static_cast<double>(one_plus_z)
-       << " are invalid (valid: j >= 0, l >= 1, z >= -1 finite, 1 + z > 0)";
-    throw std::domain_error(os.str());
+    detail::invalid_arguments("quadratic_moment", j, l,
+                              {{"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
+                              "j >= 0, l >= 1, z >= -1 finite, 1 + z > 0");
   }
   return z >= Scalar(-0.75) && z <= Scalar(7) ? detail::quadratic_moment_series(j, l, z, one_plus_z)
                                                : detail::quadratic_moment_closed(j, l, z, one_plus_z);
@@ -140,12 +152,9 @@ Scalar edge_moment_recurrence(int j, int l, const Scalar& z, const Scalar& one_p
 template <typename Scalar>
 Scalar edge_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   if (!(z >= -1) || !(one_plus_z > 0) || j < 0 || l < 0 || !std::isfinite(static_cast<double>(z))) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "wavecontact::edge_moment: j = " << j << ", l = " << l << ", z = " << static_cast<double>(z)
-       << ", 1 + z = " << static_cast<double>(one_plus_z)
-       << " are invalid (valid: j >= 0, l >= 0, z >= -1 finite, 1 + z > 0)";
-    throw std::domain_error(os.str());
+    detail::invalid_arguments("edge_moment", j, l,
+                              {{"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
+                              "j >= 0, l >= 0, z >= -1 finite, 1 + z > 0");
   }
   using std::pow;
   if (l == 0) return detail::edge_weight<Scalar>(j);
@@ -246,14 +255,11 @@ Scalar two_factor(int j, int l, const Scalar& y, const Scalar& one_plus_y, const
   const bool near = l > 0 && fabs(difference) <= Scalar(0.8) * larger;
   if (j < 0 || l < 0 || !(one_plus_y > 0) || !(one_plus_z > 0) || !std::isfinite(static_cast<double>(y)) ||
       !std::isfinite(static_cast<double>(z)) || (near && larger > 5)) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "wavecontact::two_factor_moment: j = " << j << ", l = " << l << ", y = " << static_cast<double>(y)
-       << ", 1 + y = " << static_cast<double>(one_plus_y) << ", z = " << static_cast<double>(z)
-       << ", 1 + z = " << static_cast<double>(one_plus_z)
-       << " are invalid (valid: j >= 0, l >= 0, y and z finite, 1 + y > 0, 1 + z > 0, and y, z <= 4"
-          " where |y - z| <= (4/5) max(1 + y, 1 + z))";
-    throw std::domain_error(os.str());
+    invalid_arguments("two_factor_moment", j, l,
+                      {{"y", static_cast<double>(y)}, {"1 + y", static_cast<double>(one_plus_y)},
+                       {"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
+                      "j >= 0, l >= 0, y and z finite, 1 + y > 0, 1 + z > 0, and y, z <= 4 where "
+                      "|y - z| <= (4/5) max(1 + y, 1 + z)");
   }
   if (l == 0) return quadratic_moment(j, 1, y, one_plus_y);
   if (near) {
