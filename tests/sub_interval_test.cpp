@@ -22,11 +22,13 @@
 #include "radicals.hpp"
 #include "sub_interval.hpp"
 #include "symbols.hpp"
+#include "tanh_sinh_reference.hpp"
 #include "waviness.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;
 using GiNaC::numeric;
+using wavecontact::test::tanh_sinh;
 
 namespace {
 
@@ -61,24 +63,6 @@ const WavinessDerivation& waviness() {
 ex slope_factor_of(const ex& load) {
   const GiNaC::symbol& alpha = sym::alpha();
   return load.diff(alpha) * GiNaC::pow(1 + alpha * alpha, 2) / (4 * alpha);
-}
-
-// Int_lo^hi f at GiNaC::Digits by the tanh-sinh rule, step 1/128, nodes until the weights fall
-// below 10^-(Digits + 5); 1 - tanh(s) = 2/(e^2s + 1) keeps the nodes next to the ends apart from
-// them.
-numeric tanh_sinh(const std::function<numeric(const numeric&)>& f, const numeric& lo, const numeric& hi) {
-  const numeric half = (hi - lo) / 2, h(1, 128);
-  const numeric pi_half = GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf());
-  const numeric small = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), numeric(-static_cast<long>(GiNaC::Digits) - 5)).evalf());
-  numeric sum = f(lo + half) * pi_half;  // t = 0: weight pi/2
-  for (int k = 1;; ++k) {
-    const numeric t = k * h, s = pi_half * GiNaC::sinh(t);
-    const numeric gap = 2 / (GiNaC::exp(2 * s) + 1);  // 1 - tanh(s)
-    const numeric weight = pi_half * GiNaC::cosh(t) / (GiNaC::cosh(s) * GiNaC::cosh(s));
-    if (weight < small) break;
-    sum += weight * (f(hi - half * gap) + f(lo + half * gap));
-  }
-  return sum * half * h;
 }
 
 }  // namespace
