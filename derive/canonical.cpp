@@ -50,15 +50,27 @@ std::string canonical_string(const ex& e) {
     return s;
   }
   if (GiNaC::is_a<GiNaC::mul>(e)) {
+    // Each factor sum^k with the sum's sign fixed (GiNaC may store a factor as -(sum) in one run
+    // and (-sum) in the next), the sign carried into the coefficient.
     std::vector<std::string> factors;
-    std::string coefficient;
+    GiNaC::numeric sign = 1, number = 1;
     for (const ex& factor : e) {
       if (GiNaC::is_a<GiNaC::numeric>(factor)) {
-        coefficient = plain(factor);
+        number = GiNaC::ex_to<GiNaC::numeric>(factor);
+        continue;
+      }
+      const bool power = GiNaC::is_a<GiNaC::power>(factor);
+      const ex base = power ? factor.op(0) : factor, exponent = power ? factor.op(1) : ex(1);
+      if (GiNaC::is_a<GiNaC::add>(base) && GiNaC::is_a<GiNaC::numeric>(exponent) &&
+          GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer() && leading_term_negative(base)) {
+        if (GiNaC::ex_to<GiNaC::numeric>(exponent).is_odd()) sign = -sign;
+        factors.push_back(canonical_string((-base).expand(), GiNaC::ex_to<GiNaC::numeric>(exponent)));
       } else {
         factors.push_back(wrapped(factor));
       }
     }
+    const GiNaC::numeric value = sign * number;
+    const std::string coefficient = value.is_equal(1) ? "" : plain(value);
     std::sort(factors.begin(), factors.end());
     std::string s = coefficient == "-1" ? "-" : coefficient.empty() ? "" : coefficient + "*";
     for (std::size_t i = 0; i < factors.size(); ++i) s += (i ? "*" : "") + factors[i];
@@ -66,8 +78,14 @@ std::string canonical_string(const ex& e) {
   }
   if (GiNaC::is_a<GiNaC::power>(e)) return wrapped(e.op(0)) + "^" + wrapped(e.op(1));
   if (GiNaC::is_a<GiNaC::function>(e)) {
+    // A rational argument as one fraction with its signs fixed: GiNaC may store a factor of it as
+    // -(sum) in one run and (-sum) in the next.
     std::string s = GiNaC::ex_to<GiNaC::function>(e).get_name() + "(";
-    for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? "," : "") + canonical_string(e.op(i));
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const ex& argument = e.op(i);
+      s += (i ? "," : "") + (argument.info(GiNaC::info_flags::rational_function) ? canonical_rational(argument)
+                                                                                : canonical_string(argument));
+    }
     return s + ")";
   }
   return plain(e);

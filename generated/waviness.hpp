@@ -108,16 +108,16 @@ inline Scalar waviness_load_slope_factor_beyond_half(const Scalar& E, const Scal
   const Scalar _tmp14 = -((_tmp1 + Scalar(1.0)) / _tmp13);
   const Scalar _tmp15 = -(_tmp6 / _tmp13);
   const Scalar _tmp16 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp14, _tmp15);
-  const Scalar _tmp17 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp18 = H1 * (E * _tmp17);
-  const Scalar _tmp19 = Ca * Ca;
-  const Scalar _tmp20 = _tmp3 * _tmp3;
-  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp5, _tmp7);
-  const Scalar _tmp22 = Sa * (H1 * (E * (_tmp0 * Scalar(4.0))));
-  const Scalar _tmp23 = m * m;
-  const Scalar _tmp24 = H1 * (E * (Ca * _tmp17));
-  const Scalar _tmp25 = Sa * (H1 * (E * (_tmp0 * Scalar(3.0))));
-  return ((((((((((((_tmp21 * (_tmp22 * _tmp23)) / _tmp20) + (((_tmp8 * (m * _tmp18)) / _tmp4) + ((_tmp8 * _tmp18) / _tmp4))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp16 * (H1 * (E * (_tmp11 * Scalar(2.0))))) / _tmp13)) - ((_tmp16 * (Sa * (H1 * (E * (_tmp11 * Scalar(3.0)))))) / (_tmp12 * _tmp19))) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp14, _tmp15) * (Sa * (H1 * (E * (_tmp11 * Scalar(4.0)))))) / ((_tmp12 * _tmp12) * (Ca * _tmp19)))) - ((_tmp21 * _tmp22) / _tmp20)) - ((_tmp8 * (_tmp23 * _tmp24)) / _tmp4)) - ((_tmp8 * (m * _tmp24)) / _tmp4)) - ((_tmp8 * (_tmp23 * _tmp25)) / _tmp4)) - ((_tmp8 * (m * _tmp25)) / _tmp4);
+  const Scalar _tmp17 = m * m;
+  const Scalar _tmp18 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp19 = H1 * (E * (Ca * _tmp18));
+  const Scalar _tmp20 = Ca * Ca;
+  const Scalar _tmp21 = Sa * (H1 * (E * (_tmp0 * Scalar(3.0))));
+  const Scalar _tmp22 = _tmp3 * _tmp3;
+  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp5, _tmp7);
+  const Scalar _tmp24 = Sa * (H1 * (E * (_tmp0 * Scalar(4.0))));
+  const Scalar _tmp25 = H1 * (E * _tmp18);
+  return ((((((((((((_tmp23 * (_tmp17 * _tmp24)) / _tmp22) + (((_tmp8 * (m * _tmp25)) / _tmp4) + ((_tmp8 * _tmp25) / _tmp4))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp16 * (H1 * (E * (_tmp11 * Scalar(2.0))))) / _tmp13)) - ((_tmp8 * (_tmp17 * _tmp19)) / _tmp4)) - ((_tmp8 * (m * _tmp19)) / _tmp4)) - ((_tmp16 * (Sa * (H1 * (E * (_tmp11 * Scalar(3.0)))))) / (_tmp12 * _tmp20))) - ((_tmp8 * (_tmp17 * _tmp21)) / _tmp4)) - ((_tmp8 * (m * _tmp21)) / _tmp4)) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp14, _tmp15) * (Sa * (H1 * (E * (_tmp11 * Scalar(4.0)))))) / ((_tmp12 * _tmp12) * (Ca * _tmp20)))) - ((_tmp23 * _tmp24) / _tmp22);
 }
 
 // The same slope factor from the moments of (1 + v^2) g' + v g (no end point differentiated):
@@ -141,21 +141,21 @@ inline Scalar waviness_load_slope_factor_by_parts(const Scalar& E, const Scalar&
   const Scalar _tmp12 = sqrt(-Ca);
   const Scalar _tmp13 = Scalar(1.0) - _tmp2;
   const Scalar _tmp14 = _tmp13 * (_tmp13 * _tmp13);
-  const Scalar _tmp15 = m * m;
-  const Scalar _tmp16 = -((Ca * (Scalar(1.0) - m)) / _tmp13);
-  const Scalar _tmp17 = _tmp5 / _tmp13;
-  const Scalar _tmp18 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp16, _tmp17);
-  const Scalar _tmp19 = H1 * (E * (_tmp9 * _tmp12));
-  const Scalar _tmp20 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp16, _tmp17);
+  const Scalar _tmp15 = -((Ca * (Scalar(1.0) - m)) / _tmp13);
+  const Scalar _tmp16 = _tmp5 / _tmp13;
+  const Scalar _tmp17 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp15, _tmp16);
+  const Scalar _tmp18 = H1 * (E * (_tmp9 * _tmp12));
+  const Scalar _tmp19 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp15, _tmp16);
+  const Scalar _tmp20 = m * m;
   const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp4, _tmp6);
   const Scalar _tmp22 = Ca * _tmp8;
-  const Scalar _tmp23 = m * (H1 * (E * (_tmp0 * Scalar(3.0))));
-  const Scalar _tmp24 = _tmp12 * Scalar(3.0);
-  const Scalar _tmp25 = H1 * (E * (Ca * _tmp24));
-  const Scalar _tmp26 = m * _tmp25;
-  const Scalar _tmp27 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp16, _tmp17);
-  const Scalar _tmp28 = H1 * (E * (_tmp9 * _tmp24));
-  return (((((((((((_tmp10 * (m * (H1 * (E * (_tmp0 * Scalar(4.0)))))) / _tmp11) + (((_tmp21 * _tmp23) / _tmp8) + (((_tmp27 * (_tmp15 * (H1 * (E * (Ca * (_tmp12 * Scalar(5.0))))))) / _tmp14) + (((_tmp26 * _tmp27) / _tmp14) + (((_tmp20 * _tmp26) / _tmp14) + (((_tmp20 * (_tmp15 * _tmp25)) / _tmp14) + (((_tmp20 * (H1 * (E * _tmp12))) / _tmp14) + (((_tmp18 * _tmp19) / _tmp14) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp4, _tmp6) * _tmp7) / _tmp1) + ((_tmp7 * _tmp10) / _tmp11)))))))))) - ((_tmp18 * (_tmp15 * _tmp19)) / _tmp14)) - ((_tmp21 * (H1 * (E * (_tmp0 * Scalar(2.0))))) / _tmp22)) - ((_tmp10 * _tmp23) / _tmp22)) - ((_tmp21 * (m * (H1 * (E * (_tmp0 * Scalar(5.0)))))) / _tmp22)) - ((_tmp27 * (H1 * (E * (Ca * (_tmp12 * Scalar(2.0)))))) / _tmp14)) - ((_tmp27 * (_tmp15 * _tmp28)) / _tmp14)) - ((_tmp27 * (m * _tmp28)) / _tmp14)) - ((_tmp20 * (m * (H1 * (E * _tmp24)))) / _tmp14)) - ((_tmp20 * (_tmp15 * (H1 * (E * (_tmp12 * Scalar(4.0)))))) / _tmp14);
+  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp15, _tmp16);
+  const Scalar _tmp24 = m * (H1 * (E * (_tmp0 * Scalar(3.0))));
+  const Scalar _tmp25 = _tmp12 * Scalar(3.0);
+  const Scalar _tmp26 = H1 * (E * (_tmp9 * _tmp25));
+  const Scalar _tmp27 = H1 * (E * (Ca * _tmp25));
+  const Scalar _tmp28 = m * _tmp27;
+  return (((((((((((_tmp23 * (_tmp20 * (H1 * (E * (Ca * (_tmp12 * Scalar(5.0))))))) / _tmp14) + (((_tmp10 * (m * (H1 * (E * (_tmp0 * Scalar(4.0)))))) / _tmp11) + (((_tmp23 * _tmp28) / _tmp14) + (((_tmp19 * _tmp28) / _tmp14) + (((_tmp19 * (_tmp20 * _tmp27)) / _tmp14) + (((_tmp21 * _tmp24) / _tmp8) + (((_tmp19 * (H1 * (E * _tmp12))) / _tmp14) + (((_tmp17 * _tmp18) / _tmp14) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp4, _tmp6) * _tmp7) / _tmp1) + ((_tmp7 * _tmp10) / _tmp11)))))))))) - ((_tmp17 * (_tmp18 * _tmp20)) / _tmp14)) - ((_tmp21 * (H1 * (E * (_tmp0 * Scalar(2.0))))) / _tmp22)) - ((_tmp23 * (H1 * (E * (Ca * (_tmp12 * Scalar(2.0)))))) / _tmp14)) - ((_tmp10 * _tmp24) / _tmp22)) - ((_tmp23 * (_tmp20 * _tmp26)) / _tmp14)) - ((_tmp23 * (m * _tmp26)) / _tmp14)) - ((_tmp19 * (m * (H1 * (E * _tmp25)))) / _tmp14)) - ((_tmp19 * (_tmp20 * (H1 * (E * (_tmp12 * Scalar(4.0)))))) / _tmp14)) - ((_tmp21 * (m * (H1 * (E * (_tmp0 * Scalar(5.0)))))) / _tmp22);
 }
 
 // z of the top piece's I_{j,l} beyond b1/2 (it grows without bound towards b1/2): it selects
