@@ -38,7 +38,7 @@ enum class Op { Constant, Input, Add, Sub, Mul, Div, Neg, Sqrt, Call };
 struct Node {
   Op op;
   std::string text;  // Constant literal, Input name, or a Call's function and leading arguments
-  int a = -1, b = -1, c = -1, d = -1;  // operands; a Call's arguments (two or four)
+  int a = -1, b = -1, c = -1, d = -1;  // operands; a Call's arguments (two to four)
   bool operator<(const Node& o) const {
     return std::tie(op, text, a, b, c, d) < std::tie(o.op, o.text, o.a, o.b, o.c, o.d);
   }
@@ -109,6 +109,11 @@ class Graph {
       call << "wavecontact::" << GiNaC::ex_to<GiNaC::function>(e).get_name() << "<Scalar>(" << e.op(0) << ", "
            << e.op(1) << ", ";
       return {false, intern({Op::Call, call.str(), lower(e.op(2)), lower(e.op(3)), lower(e.op(4)), lower(e.op(5))})};
+    }
+    if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "conjugate_logarithm") {
+      // Xi(a, b, a - b) of full contact for a profile built with abs() (full_contact.hpp).
+      return {false, intern({Op::Call, "wavecontact::conjugate_logarithm<Scalar>(", lower(e.op(0)), lower(e.op(1)),
+                             lower(e.op(2))})};
     }
     if (GiNaC::is_a<GiNaC::add>(e)) return {false, lower_sum(e)};
     if (GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e)) return lower_product(e);
@@ -303,7 +308,8 @@ class Printer {
       case Op::Sqrt: return "sqrt(" + expression(n.a, true) + ")";
       case Op::Call:
         s = n.text + expression(n.a, true) + ", " + expression(n.b, true);
-        if (n.c >= 0) s += ", " + expression(n.c, true) + ", " + expression(n.d, true);
+        if (n.c >= 0) s += ", " + expression(n.c, true);
+        if (n.d >= 0) s += ", " + expression(n.d, true);
         return s + ")";
     }
     return top ? s : "(" + s + ")";

@@ -15,7 +15,7 @@ namespace wavecontact::derive {
 
 struct OpCounts {
   int additions = 0, multiplications = 0, divisions = 0, square_roots = 0, negations = 0;
-  int calls = 0;  // of wavecontact::quadratic_moment and two_factor_moment (sub_interval.hpp)
+  int calls = 0;  // of the atoms: quadratic_moment, two_factor_moment (sub_interval.hpp), conjugate_logarithm
   int temporaries = 0;
   int total() const {
     return additions + multiplications + divisions + square_roots + negations + calls;

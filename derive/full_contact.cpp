@@ -6,9 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "canonical.hpp"
 #include "hilbert.hpp"
 #include "sub_interval.hpp"
-#include "canonical.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -30,13 +30,13 @@ ex conjugate_logarithm_evalf(const ex& a, const ex& b, const ex& a_minus_b) {
   if (A.is_negative() || B.is_negative() || (A + B).is_zero()) {
     throw std::domain_error("conjugate_logarithm: a, b >= 0 and a + b > 0");
   }
-  if (difference.is_zero() || A.is_zero()) return 0;
-  if (B.is_zero()) return 2;
+  if (difference.is_zero() || B.is_zero()) return 0;
+  if (A.is_zero()) return -2;
   // s^2 = min/max, atanh(s) = log(1 + s) - log(1 - s^2)/2 with 1 - s^2 = |a - b|/max: exact
   // however close a and b are.
   const numeric larger = A > B ? A : B, s = GiNaC::sqrt((A > B ? B : A) / larger);
   const numeric atanh = GiNaC::log(1 + s) - GiNaC::log(GiNaC::abs(difference) / larger) / 2;
-  return difference / (A + B) * (A > B ? 2 * atanh / s : 2 * s * atanh);
+  return difference / (A + B) * (A > B ? 2 * s * atanh : 2 * atanh / s);
 }
 
 // The coefficient of h^order in the Taylor series of the rational function f at h = 0.
@@ -78,44 +78,99 @@ ex in_square(const ex& R) { return R.subs(sym::Cx() == (1 - sym::t()) / (1 + sym
 
 ex in_cosine_of(const ex& e) { return e.subs(sym::t() == (1 - sym::Cx()) / (1 + sym::Cx())).normal(); }
 
-// rho(t) of one piece of a profile built with abs() (full_contact.hpp): the B_i(tau) of
-// [0, beta] (top) or [beta, inf).
-ex piece_rho(const ex& Y, const numeric& beta, bool top) {
+
+// A profile built with abs() (full_contact.hpp): F = t Y'(t) of a branch as N(t)/(a + b t)^L,
+// N a polynomial of degree <= L, its one pole factor kept whole (no coefficient singular where
+// b -> 0, the pole passing through infinity, as the top's of eq. 2 does at m = 1).
+struct PoleForm {
+  ex N, a = 1, b = 0;
+  int L = 0;
+};
+
+PoleForm pole_form(const ex& F) {
   const GiNaC::symbol& t = sym::t();
-  const GiNaC::symbol h("h");
-  const numeric beta2 = beta * beta;
-  ex rho = 0;
-  for (const Pole& pole : poles_in(Y, t)) {
-    const ex& tau = pole.tau;
-    const ex W = pole.regular.subs(t == tau + h);
-    for (int l = 1; l <= pole.order; ++l) {
-      const ex c = taylor_coefficient(W, h, pole.order - l);  // of 1/(t - tau)^l
-      for (int i = 1; i <= l; ++i) {
-        const ex B = top ? beta * GiNaC::pow(-tau, -i) *
-                               quadratic_moment(0, i, (-beta2 / tau).normal(), ((tau - beta2) / tau).normal())
-                         : GiNaC::pow(beta, 1 - 2 * i) *
-                               quadratic_moment(i - 1, i, (-tau / beta2).normal(), ((beta2 - tau) / beta2).normal());
-        rho += 2 * c * B / GiNaC::pow(t - tau, l + 1 - i);
-      }
+  const ex fraction = F.normal().numer_denom();
+  const ex denominator = GiNaC::factor(fraction.op(1));
+  PoleForm form;
+  ex constant = 1;
+  for (const ex& factor_power : GiNaC::is_a<GiNaC::mul>(denominator) ? std::vector<ex>(denominator.begin(), denominator.end())
+                                                                       : std::vector<ex>{denominator}) {
+    const bool power = GiNaC::is_a<GiNaC::power>(factor_power);
+    const ex factor = power ? factor_power.op(0) : factor_power;
+    if (!factor.has(t)) {
+      constant *= factor_power;
+      continue;
     }
+    if (form.L > 0 || factor.degree(t) != 1) {
+      std::ostringstream os;
+      os << "full_contact_pressure: the slope's denominator " << denominator
+         << " has more than one pole factor, or one not linear in v^2";
+      throw std::invalid_argument(os.str());
+    }
+    form.L = power ? GiNaC::ex_to<numeric>(factor_power.op(1)).to_int() : 1;
+    form.a = factor.coeff(t, 0);
+    form.b = factor.coeff(t, 1);
   }
-  return rho;
+  form.N = (fraction.op(0) / constant).expand();
+  if (form.N.degree(t) > form.L) {
+    throw std::invalid_argument("full_contact_pressure: the profile's slope is not bounded at x^ = pi");
+  }
+  return form;
 }
 
-// The moments of a piece of a profile built with abs() for a point on one side (full_contact.hpp):
-// I_{j,l} and J_{j,l} over [0, beta] (top) or [beta, inf), with y of the Cauchy factor 1/(t - u^2).
+// Sum_k p_k (1 - q)^k = P(q): the coefficients p_k of a polynomial in q in powers of 1 - q.
+std::vector<ex> in_edge_powers(const ex& P, const GiNaC::symbol& q) {
+  const GiNaC::symbol r("r");
+  const ex in_r = P.subs(q == 1 - r).expand();
+  std::vector<ex> p;
+  for (int k = 0; k <= in_r.degree(r); ++k) p.push_back(in_r.coeff(r, k));
+  return p;
+}
+
+// Moments over the piece [0, beta] (top, u = beta w) or [beta, inf) (u = beta/w) of a polynomial
+// sum_j c_j s^j, s = u^2, over the pole factor: Int_0^1 P(q)/(1 + z q)^L dw, q = w^2, with the
+// numerator in powers of 1 - q (the edge basis I'_{k,L}, J'_{k,L} of sub_interval.hpp). Where the
+// pole factor nears the piece's end w = 1 (z -> -1, the poles of eq. 2 for large m next to the
+// branch point) the I_{j,L}, J_{j,L} of the monomials all tend to one large value and their sum
+// cancels; in the edge basis its terms fall off instead.
 struct Piece {
   numeric beta;
   bool top;
-  // Int_piece du/(u^2 - tau)^i.
-  ex power(const ex& tau, int i) const {
-    const numeric beta2 = beta * beta;
-    return top ? beta * GiNaC::pow(-tau, -i) *
-                     quadratic_moment(0, i, (-beta2 / tau).normal(), ((tau - beta2) / tau).normal())
-               : GiNaC::pow(beta, 1 - 2 * i) *
-                     quadratic_moment(i - 1, i, (-tau / beta2).normal(), ((beta2 - tau) / beta2).normal());
+
+  // P(q) = sum_j c_j beta^2j q^(e(j)) for the piece's substitution, and the sum of p_k atom(k).
+  ex edge_sum(const ex& polynomial, const GiNaC::symbol& s, const std::function<int(int)>& exponent,
+              const std::function<ex(int)>& atom) const {
+    const GiNaC::symbol q("q");
+    ex P = 0;
+    for (int j = 0; j <= polynomial.degree(s); ++j) {
+      P += polynomial.coeff(s, j) * GiNaC::pow(beta, 2 * j) * GiNaC::pow(q, exponent(j));
+    }
+    const std::vector<ex> p = in_edge_powers(P, q);
+    ex sum = 0;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      if (!p[k].is_zero()) sum += p[k] * atom(static_cast<int>(k));
+    }
+    return sum;
   }
-  // Int_piece du/(t - u^2) with t on the piece (principal value): Lambda/(2v) on [0, beta],
+  // z and 1 + z of the pole factor a + b u^2 under the piece's substitution.
+  ex z(const PoleForm& f) const {
+    const numeric beta2 = beta * beta;
+    return (top ? f.b * beta2 / f.a : f.a / (f.b * beta2)).normal();
+  }
+  ex one_plus_z(const PoleForm& f) const {
+    const numeric beta2 = beta * beta;
+    return ((f.a + f.b * beta2) / (top ? f.a : f.b * beta2)).normal();
+  }
+
+  // Int_piece c(u^2)/(a + b u^2)^L du for the polynomial c in s (degree < L on [beta, inf)).
+  ex moment(const ex& c, const GiNaC::symbol& s, const PoleForm& f) const {
+    const ex Z = z(f), W = one_plus_z(f);
+    const int L = f.L;
+    const auto atom = [&](int k) { return edge_moment(k, L, Z, W); };
+    if (top) return beta * GiNaC::pow(f.a, -L) * edge_sum(c, s, [](int j) { return j; }, atom);
+    return GiNaC::pow(beta, 1 - 2 * L) * GiNaC::pow(f.b, -L) * edge_sum(c, s, [L](int j) { return L - 1 - j; }, atom);
+  }
+  // Int_piece du/(t - u^2), t on the piece (principal value): Lambda/(2v) on [0, beta],
   // -Lambda/(2v) beyond, Lambda = log|(v + beta)/(v - beta)|.
   ex cauchy_on() const {
     const GiNaC::symbol& t = sym::t();
@@ -123,79 +178,35 @@ struct Piece {
     return top ? 1 / beta * quadratic_moment(0, 1, -t / beta2, (beta2 - t) / beta2)
                : -beta / t * quadratic_moment(0, 1, -beta2 / t, (t - beta2) / t);
   }
-  // The same with t off the piece: Lambda/(2v) from [0, beta], -Lambda/(2v) from beyond.
-  ex cauchy_off() const {
+  // Int_piece c(u^2)/((a + b u^2)^L (t - u^2)) du for the polynomial c in t, t off the piece: the Cauchy factor kept beside the
+  // pole factor (J'_{k,L}; I'_{k,1} of the Cauchy factor alone where L = 0).
+  ex cauchy_moment(const ex& c, const PoleForm& f) const {
     const GiNaC::symbol& t = sym::t();
     const numeric beta2 = beta * beta;
-    return top ? beta / t * quadratic_moment(0, 1, -beta2 / t, (t - beta2) / t)
-               : -1 / beta * quadratic_moment(0, 1, -t / beta2, (beta2 - t) / beta2);
-  }
-  // Int_piece du/((u^2 - tau)^l (t - u^2)), t off the piece.
-  ex cauchy_power(const ex& tau, int l) const {
-    const GiNaC::symbol& t = sym::t();
-    const numeric beta2 = beta * beta;
-    return top ? beta / t * GiNaC::pow(-tau, -l) *
-                     two_factor_moment(0, l, -beta2 / t, (t - beta2) / t, (-beta2 / tau).normal(),
-                                       ((tau - beta2) / tau).normal())
-               : -GiNaC::pow(beta, -1 - 2 * l) *
-                     two_factor_moment(l, l, -t / beta2, (beta2 - t) / beta2, (-tau / beta2).normal(),
-                                       ((beta2 - tau) / beta2).normal());
+    const ex y = top ? -beta2 / t : -t / beta2, one_plus_y = top ? (t - beta2) / t : (beta2 - t) / beta2;
+    const int L = f.L;
+    const auto atom = [&](int k) {
+      return L == 0 ? edge_moment(k, 1, y, one_plus_y) : two_factor_edge_moment(k, L, y, one_plus_y, z(f), one_plus_z(f));
+    };
+    if (top) return beta * GiNaC::pow(f.a, -L) / t * edge_sum(c, t, [](int j) { return j; }, atom);
+    if (L == 0) return -1 / beta * edge_sum(c, t, [](int) { return 0; }, atom);  // c constant
+    return -GiNaC::pow(beta, -1 - 2 * L) * GiNaC::pow(f.b, -L) * edge_sum(c, t, [L](int j) { return L - j; }, atom);
   }
 };
 
-// The partial fractions of F in the variable x: sum c/(x - tau)^l, each term passed to term(c, tau, l);
-// returns the rest, F minus that sum.
-ex partial_fractions(const ex& F, const GiNaC::symbol& x, const std::function<void(const ex&, const ex&, int)>& term) {
-  const GiNaC::symbol h("h");
-  ex rest = F;
-  for (const Pole& pole : poles_in(F, x)) {
-    const ex W = pole.regular.subs(x == pole.tau + h);
-    for (int l = 1; l <= pole.order; ++l) {
-      const ex c = taylor_coefficient(W, h, pole.order - l);
-      term(c, pole.tau, l);
-      rest -= c / GiNaC::pow(x - pole.tau, l);
-    }
-  }
-  return rest.normal();
-}
-
-// Int_piece F(u^2)/(t - u^2) du for t on the piece (principal value), F rational and bounded
-// at infinity: (F(s) - F(t))/(t - s), free of the pole at s = t, by partial fractions in s, plus
-// F(t) times the piece's Cauchy integral with t on it.
-ex own_piece(const ex& F, const Piece& piece) {
+// Int_piece (F(s) - F(t))/(t - s) du, s = u^2, t anywhere: (F(s) - F(t))/(t - s) =
+// P(s, t)/((a + b s)^L (a + b t)^L) with P a polynomial of degree < L in s.
+ex jump_apart(const PoleForm& f, const Piece& piece) {
+  if (f.L == 0) return 0;  // F constant
   const GiNaC::symbol& t = sym::t();
   const GiNaC::symbol s("s");
-  const ex quotient = ((F.subs(t == s) - F) / (t - s)).normal();
-  ex integral = 0;
-  const ex rest = partial_fractions(quotient, s, [&](const ex& c, const ex& tau, int l) { integral += c * piece.power(tau, l); });
-  if (!rest.is_zero()) throw std::logic_error("full_contact_pressure: the profile's slope is not bounded at x^ = pi");
-  return integral + F * piece.cauchy_on();
+  const ex F = f.N / GiNaC::pow(f.a + f.b * t, f.L);
+  const ex P = ((F.subs(t == s) - F) / (t - s) * GiNaC::pow(f.a + f.b * s, f.L) * GiNaC::pow(f.a + f.b * t, f.L)).normal().expand();
+  return piece.moment(P, s, f) / GiNaC::pow(f.a + f.b * t, f.L);
 }
 
-// Int_piece F(u^2)/(t - u^2) du for t off the piece, the Cauchy factor kept beside each pole
-// factor (J_{j,l}): no coefficient has a pole where t meets the pole of F, on the other side.
-ex other_piece(const ex& F, const Piece& piece) {
-  const GiNaC::symbol& t = sym::t();
-  ex integral = 0;
-  const ex constant = partial_fractions(F, t, [&](const ex& c, const ex& tau, int l) { integral += c * piece.cauchy_power(tau, l); });
-  if (constant.has(t)) throw std::logic_error("full_contact_pressure: the profile's slope is not bounded at x^ = pi");
-  return integral + constant * piece.cauchy_off();
-}
-
-// Rewrites the arguments of the atoms from t to Cx, each factored (1 + y, 1 + z as products
-// such as (Cx - c)/(1 + Cx), which keep their digits where they vanish).
-struct AtomsInCosine : GiNaC::map_function {
-  ex operator()(const ex& e) override {
-    if (GiNaC::is_a<GiNaC::function>(e)) {
-      GiNaC::exvector arguments;
-      for (const ex& argument : e) arguments.push_back(GiNaC::factor(in_cosine_of(argument)));
-      GiNaC::function f = GiNaC::ex_to<GiNaC::function>(e);
-      for (std::size_t i = 0; i < arguments.size(); ++i) f.let_op(i) = arguments[i];
-      return f;
-    }
-    return e.map(*this);
-  }
-};
+// Int_piece F(u^2)/(t - u^2) du for t off the piece, the Cauchy factor beside the pole factor.
+ex cauchy_kept(const PoleForm& f, const Piece& piece) { return piece.cauchy_moment(f.N, f); }
 
 // tan(x^/2) at the branch point, rational (branches.hpp).
 numeric branch_tangent(const numeric& cosine) {
@@ -214,9 +225,24 @@ ex fixed_fraction(const ex& e) {
   return numerator / denominator;
 }
 
-// sum_k c_k A_k + c_0 for the atoms A_k (functions) of e, linear in them: each coefficient one
-// rational function.
-ex collect_atoms(const ex& e) {
+// The atoms' arguments from t to Cx, each one fraction (1 + y, 1 + z such as 2 Cx/(1 + Cx) for
+// eq. 2, whose numerators, linear in Cx, keep their digits where they vanish).
+struct AtomsInCosine : GiNaC::map_function {
+  ex operator()(const ex& e) override {
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+      GiNaC::function f = GiNaC::ex_to<GiNaC::function>(e);
+      for (std::size_t i = 0; i < f.nops(); ++i) f.let_op(i) = fixed_fraction(in_cosine_of(f.op(i)));
+      return f;
+    }
+    return e.map(*this);
+  }
+};
+
+// (E*/b1) sum_k c_k A_k + c_0 from (1 + t) times the bracket, in Cx: e linear in its atoms A_k, each
+// coefficient one rational function, the atoms in the order of their canonical strings.
+ex in_cosine_by_atom(const ex& bracket) {
+  AtomsInCosine atoms_in_cosine;
+  const ex e = atoms_in_cosine(bracket.subs(sym::t() == (1 - sym::Cx()) / (1 + sym::Cx())) * 2 / (1 + sym::Cx()));
   GiNaC::exset found;
   const std::function<void(const ex&)> visit = [&](const ex& sub) {
     if (GiNaC::is_a<GiNaC::function>(sub)) {
@@ -226,35 +252,38 @@ ex collect_atoms(const ex& e) {
     }
   };
   visit(e);
-  GiNaC::exmap to_symbols;
-  std::vector<std::pair<GiNaC::symbol, ex>> atoms;
-  std::vector<ex> ordered(found.begin(), found.end());  // by canonical string: the same on every run
-  std::sort(ordered.begin(), ordered.end(),
-            [](const ex& a, const ex& b) { return canonical_string(a) < canonical_string(b); });
-  for (const ex& atom : ordered) {
-    atoms.emplace_back(GiNaC::symbol(), atom);
-    to_symbols[atom] = atoms.back().first;
-  }
+  std::vector<ex> atoms(found.begin(), found.end());
+  std::sort(atoms.begin(), atoms.end(), [](const ex& x, const ex& y) { return canonical_string(x) < canonical_string(y); });
+  std::vector<GiNaC::symbol> symbols(atoms.size());
+  GiNaC::exmap to_symbols, zero;
+  for (std::size_t k = 0; k < atoms.size(); ++k) to_symbols[atoms[k]] = symbols[k], zero[symbols[k]] = 0;
   const ex linear = e.subs(to_symbols);
-  GiNaC::exmap zero;
-  for (const auto& [symbol, atom] : atoms) zero[symbol] = 0;
   ex sum = fixed_fraction(linear.subs(zero));
-  for (const auto& [symbol, atom] : atoms) sum += fixed_fraction(linear.diff(symbol).subs(zero)) * atom;
-  return sum;
+  for (std::size_t k = 0; k < atoms.size(); ++k) sum += fixed_fraction(linear.diff(symbols[k]).subs(zero)) * atoms[k];
+  return sym::E() / sym::b1() * sum;
+}
+
+struct Branches {
+  numeric beta;
+  PoleForm top, flank;
+  ex F_top, F_flank;
+};
+
+Branches branches_of(const ex& R_top, const ex& R_flank, const numeric& cosine) {
+  const GiNaC::symbol& t = sym::t();
+  Branches b{branch_tangent(cosine), {}, {}, (t * in_square(R_top).diff(t)).normal(),
+             (t * in_square(R_flank).diff(t)).normal()};
+  const ex at_branch = b.beta * b.beta;
+  if (!(in_square(R_top) - in_square(R_flank)).subs(t == at_branch).normal().is_zero() ||
+      !(b.F_top - b.F_flank).subs(t == at_branch).normal().is_zero()) {
+    throw std::logic_error("full_contact_pressure: the branches or their slopes do not meet at the branch point");
+  }
+  b.top = pole_form(b.F_top);
+  b.flank = pole_form(b.F_flank);
+  return b;
 }
 
 }  // namespace
-
-ex full_contact_pressure_on_side(const ex& R_own, const ex& R_other, const numeric& cosine, bool top) {
-  const GiNaC::symbol& t = sym::t();
-  const numeric beta = branch_tangent(cosine);
-  const ex F_own = (t * in_square(R_own).diff(t)).normal(), F_other = (t * in_square(R_other).diff(t)).normal();
-  const ex bracket = own_piece(F_own, Piece{beta, top}) + other_piece(F_other, Piece{beta, !top});
-  // Collected by atom: a rational coefficient in Cx for each.
-  AtomsInCosine atoms;
-  const ex in_cosine = atoms(bracket.subs(t == (1 - sym::Cx()) / (1 + sym::Cx())) * 2 / (1 + sym::Cx()));
-  return sym::E() / sym::b1() * collect_atoms(in_cosine);
-}
 
 REGISTER_FUNCTION(conjugate_logarithm, evalf_func(conjugate_logarithm_evalf))
 
@@ -285,20 +314,25 @@ ex full_contact_pressure(const ex& R) {
   return sym::E() / 2 * GiNaC::Pi / sym::b1() * in_cosine;
 }
 
+
 ex full_contact_pressure(const ex& R_top, const ex& R_flank, const numeric& cosine) {
   const GiNaC::symbol& t = sym::t();
-  const numeric beta = branch_tangent(cosine), beta2 = beta * beta;
-  const ex Y_top = in_square(R_top), Y_flank = in_square(R_flank);
-  const ex D = (Y_top - Y_flank).normal(), slope = D.diff(t).normal();
-  if (!D.subs(t == beta2).normal().is_zero() || !slope.subs(t == beta2).normal().is_zero()) {
-    throw std::logic_error("full_contact_pressure: the branches or their slopes do not meet at the branch point");
-  }
-  const ex rho = piece_rho(Y_top, beta, true) + piece_rho(Y_flank, beta, false);
-  const ex rational = in_cosine_of((1 + t) * (-2 * beta * D / (t - beta2) + rho + 2 * t * rho.diff(t)));
-  const ex logarithm_coefficient = in_cosine_of((1 + t) * 2 * beta * slope * (t + beta2) / (t - beta2));
+  const Branches b = branches_of(R_top, R_flank, cosine);
+  const numeric beta2 = b.beta * b.beta;
   const ex& Cx = sym::Cx();
-  const ex xi = conjugate_logarithm((1 - Cx) * (1 + cosine), (1 - cosine) * (1 + Cx), 2 * (cosine - Cx));
-  return sym::E() / (4 * sym::b1()) * (rational + logarithm_coefficient * xi);
+  // (F_top - F_flank)(t) Lambda/(2v) = D~(t) (t + beta^2) Psi/(2 beta), D~ = (F_top - F_flank)/(t - beta^2).
+  const ex psi = conjugate_logarithm(((1 - Cx) * (1 + cosine)).expand(), ((1 - cosine) * (1 + Cx)).expand(),
+                                     (2 * (cosine - Cx)).expand());
+  const ex jump = ((b.F_top - b.F_flank) / (t - beta2)).normal() * (t + beta2) / (2 * b.beta);
+  return in_cosine_by_atom(jump_apart(b.top, Piece{b.beta, true}) + jump_apart(b.flank, Piece{b.beta, false}) +
+                           jump * psi);
+}
+
+ex full_contact_pressure_on_side(const ex& R_top, const ex& R_flank, const numeric& cosine, bool top) {
+  const Branches b = branches_of(R_top, R_flank, cosine);
+  const Piece own{b.beta, top}, other{b.beta, !top};
+  return in_cosine_by_atom(jump_apart(top ? b.top : b.flank, own) + (top ? b.F_top : b.F_flank) * own.cauchy_on() +
+                           cauchy_kept(top ? b.flank : b.top, other));
 }
 
 }  // namespace wavecontact::derive

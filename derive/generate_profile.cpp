@@ -170,7 +170,18 @@ std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
       {name + "_flank_g", "g(v) of eq. 5 on the flank (|v| > beta).", with_parameters({sym::E()}, d, {v}), b.flank_g},
       {name + "_flank_height", "The flank's profile in Cx = cos x^ (Cx < the branch point's cosine).", height,
        d.flank_height},
-      {name + "_flank_height_slope", "dY/dCx on the flank.", height, d.flank_height_slope}};
+      {name + "_flank_height_slope", "dY/dCx on the flank.", height, d.flank_height_slope},
+      {name + "_full_contact_pressure",
+       "p_fc(x) of full contact over the whole period, both branches (derive/full_contact.hpp): p = P/(2 b1) +\n"
+       "p_fc, while it is >= 0; Psi from wavecontact/conjugate_logarithm.hpp. Its terms cancel next to a pole of\n"
+       "the other branch's formula: beyond twice the own slope there, the side's form below.",
+       evaluator_arguments(d).full_contact, d.full_contact_pressure},
+      {name + "_full_contact_pressure_top",
+       "The same for Cx above the branch point's cosine, the flank's moment with its Cauchy factor (J'_{j,l}).",
+       evaluator_arguments(d).full_contact, d.full_contact_pressure_top},
+      {name + "_full_contact_pressure_flank",
+       "The same for Cx below the branch point's cosine, the top's moment with its Cauchy factor (J'_{j,l}).",
+       evaluator_arguments(d).full_contact, d.full_contact_pressure_flank}};
   for (const EmittedFunction& f : pressure_beyond_branch(name + "_beyond_branch_pressure", b,
                                                         evaluator_arguments(d).pressure)) {
     functions.push_back(f);
@@ -189,6 +200,27 @@ std::string adapter(const ProfileDerivation& d, const std::string& field, const 
   return "  e." + field + " = [](const double* " + (d.parameters.empty() ? "/*q*/" : "q") +
          (signature.empty() ? "" : ", " + signature) + ") {\n    return " + d.spec.name + "_" + function +
          "<double>(" + call + ");\n  };\n";
+}
+
+// e.full_contact_pressure. For a profile built with abs(): the whole form (jump apart) where the
+// other branch's formula is no steeper than twice the own one, the side's form (Cauchy factor kept)
+// where it is, next to its poles; the whole form at the branch point itself, where the side forms'
+// logarithms are infinite.
+std::string full_contact_adapter(const ProfileDerivation& d) {
+  const std::string q = parameter_array(d);
+  if (!d.branches.branched) {
+    return adapter(d, "full_contact_pressure", "double E, double b1, double Cx", "full_contact_pressure",
+                   "E, b1, " + q + "Cx");
+  }
+  const std::string name = d.spec.name, c = double_literal(d.branches.cosine), call = "<double>(E, b1, " + q + "Cx)";
+  const std::string slope = "<double>(" + q + "Cx))";
+  return "  e.full_contact_pressure = [](const double* " + std::string(d.parameters.empty() ? "/*q*/" : "q") +
+         ", double E, double b1, double Cx) {\n"
+         "    const double top = std::fabs(" + name + "_height_slope" + slope + ", flank = std::fabs(" + name +
+         "_flank_height_slope" + slope + ";\n"
+         "    if (Cx > " + c + " && flank > 2 * top) return " + name + "_full_contact_pressure_top" + call + ";\n"
+         "    if (Cx < " + c + " && top > 2 * flank) return " + name + "_full_contact_pressure_flank" + call + ";\n"
+         "    return " + name + "_full_contact_pressure" + call + ";\n  };\n";
 }
 
 // e.height, e.height_slope: the top's, or for a profile built with abs() the branch of Cx.
@@ -325,7 +357,9 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
      << name << "_profile_evaluator());\n"
      << "#pragma once\n\n#include <cmath>\n\n"
      << (harmonic ? "#include \"wavecontact/harmonic_series.hpp\"\n" : "")
-     << (d.branches.branched ? "#include \"wavecontact/quadratic_moment.hpp\"\n" : "")
+     << (d.branches.branched
+             ? "#include \"wavecontact/conjugate_logarithm.hpp\"\n#include \"wavecontact/quadratic_moment.hpp\"\n"
+             : "")
      << "#include \"wavecontact/profile.hpp\"\n\n"
         "namespace wavecontact::generated {\n";
   for (const auto& f : functions) os << "\n" << emit_function(f);
@@ -350,9 +384,7 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
      << ", double E, double Ca, double Sa) {\n"
      << "    return " << name << "_load_slope_factor<double>(E, " << q << "Ca, Sa);\n  };\n"
      << height_adapter(d, "height") << height_adapter(d, "height_slope")
-     << (d.branches.branched ? ""
-                             : adapter(d, "full_contact_pressure", "double E, double b1, double Cx",
-                                       "full_contact_pressure", "E, b1, " + q + "Cx"))
+     << full_contact_adapter(d)
      << "  e.harmonic = " << d.forms.harmonic << ";\n"
      << "  e.pole_squares = [](const double* " << (d.pole_squares.empty() ? "/*q*/" : unused)
      << ", double* " << (d.pole_squares.empty() ? "/*tau*/" : "tau") << ") {\n";
@@ -397,6 +429,10 @@ std::string manifest(const ProfileDerivation& d, const std::string& command) {
   os << "profile.harmonic = " << d.forms.harmonic << "\n";
   if (!d.branches.branched) {
     os << "profile.full_contact_pressure = " << canonical_string(d.full_contact_pressure) << "\n";
+  } else {  // atoms in the numerators: canonical_rational fixes the signs of numerator and denominator
+    os << "profile.full_contact_pressure = " << canonical_rational(d.full_contact_pressure) << "\n"
+       << "profile.full_contact_pressure.top = " << canonical_rational(d.full_contact_pressure_top) << "\n"
+       << "profile.full_contact_pressure.flank = " << canonical_rational(d.full_contact_pressure_flank) << "\n";
   }
   if (d.branches.branched) {
     const BeyondBranch& b = d.beyond;

@@ -231,6 +231,11 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
     d.forms = derive_closed_forms(y, parts, d.sample);
     if (d.branches.branched) {
       derive_flank(spec, d);
+      const ex top = in_cosine(y);
+      const numeric& cosine = d.branches.cosine;
+      d.full_contact_pressure = full_contact_pressure(top, d.flank_height, cosine);
+      d.full_contact_pressure_top = full_contact_pressure_on_side(top, d.flank_height, cosine, true);
+      d.full_contact_pressure_flank = full_contact_pressure_on_side(top, d.flank_height, cosine, false);
     } else {
       d.full_contact_pressure = full_contact_pressure(parts.rational);
     }

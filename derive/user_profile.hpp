@@ -45,14 +45,16 @@ struct ProfileDerivation {
   std::vector<GiNaC::ex> pole_squares;
   // A profile built with abs() (branches.hpp): `forms` are those of its top branch, which
   // hold while the zone stays short of the sign change at v = branches.beta; beyond it the
-  // load and its slope are `beyond`'s, and the pressure the quadrature of eq. 12 over both
-  // branches' g (runtime). The flank's height in Cx and its parameter-dependent poles in v^2,
+  // load, its slope and the pressure are `beyond`'s. The flank's height in Cx and its parameter-dependent poles in v^2,
   // which bound the contact where they lie beyond beta (the top's where they lie short of it).
   BranchSplit branches;
   BeyondBranch beyond;
-  // p_fc(x) of full contact (full_contact.hpp) for the rational part R, in Cx; none (0) for a
-  // profile built with abs().
+  // p_fc(x) of full contact (full_contact.hpp), in Cx: for the rational part R (a cosine sum's
+  // part is the sum); for a profile built with abs() the whole of it over both branches, and the
+  // forms of each side of the branch point (Cx above, below its cosine) with the other piece's
+  // Cauchy factor kept.
   GiNaC::ex full_contact_pressure;
+  GiNaC::ex full_contact_pressure_top, full_contact_pressure_flank;
   GiNaC::ex flank_height, flank_height_slope;
   std::vector<GiNaC::ex> flank_pole_squares;
 };

@@ -6,13 +6,14 @@
 // Derived by the Block-Keer change of variables and the bounded inversion (seed eqs. 4-6, 11, 12):
 //   g(v) = ((v^3)*E*H1+(v^3)*E*H1*m+E*H1*m*v+E*H1*v)/((m^2)*(v^4)-2*(m^2)*(v^2)-2*(v^4)*m+1+2*(v^2)+2*m+m^2+v^4)
 // This is its top branch, for cos x^ >= 0, where its abs() are ((1+cos(x)*m)^(-1))*(1+m)*H1*cos(x);
-// beyond, the flank y = -((-1+cos(x)*m)^(-1))*(1+m)*H1*cos(x) (derive/branches.hpp).
+// beyond, the flank y = (-cos(x)*m+1)^(-1)*(1+m)*H1*cos(x) (derive/branches.hpp).
 // Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_profile(wavecontact::generated::parametric_wave_curve_profile_evaluator());
 #pragma once
 
 #include <cmath>
 
+#include "wavecontact/conjugate_logarithm.hpp"
 #include "wavecontact/quadratic_moment.hpp"
 #include "wavecontact/profile.hpp"
 
@@ -132,16 +133,16 @@ inline Scalar parametric_wave_curve_beyond_branch_load_slope_factor(const Scalar
   const Scalar _tmp14 = -((_tmp1 + Scalar(1.0)) / _tmp13);
   const Scalar _tmp15 = -(_tmp6 / _tmp13);
   const Scalar _tmp16 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp14, _tmp15);
-  const Scalar _tmp17 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp18 = H1 * (E * _tmp17);
-  const Scalar _tmp19 = Ca * Ca;
-  const Scalar _tmp20 = _tmp3 * _tmp3;
-  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp5, _tmp7);
-  const Scalar _tmp22 = Sa * (H1 * (E * (_tmp0 * Scalar(4.0))));
-  const Scalar _tmp23 = m * m;
-  const Scalar _tmp24 = H1 * (E * (Ca * _tmp17));
-  const Scalar _tmp25 = Sa * (H1 * (E * (_tmp0 * Scalar(3.0))));
-  return ((((((((((((_tmp21 * (_tmp22 * _tmp23)) / _tmp20) + (((_tmp8 * (m * _tmp18)) / _tmp4) + ((_tmp8 * _tmp18) / _tmp4))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp16 * (H1 * (E * (_tmp11 * Scalar(2.0))))) / _tmp13)) - ((_tmp16 * (Sa * (H1 * (E * (_tmp11 * Scalar(3.0)))))) / (_tmp12 * _tmp19))) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp14, _tmp15) * (Sa * (H1 * (E * (_tmp11 * Scalar(4.0)))))) / ((_tmp12 * _tmp12) * (Ca * _tmp19)))) - ((_tmp21 * _tmp22) / _tmp20)) - ((_tmp8 * (_tmp23 * _tmp24)) / _tmp4)) - ((_tmp8 * (m * _tmp24)) / _tmp4)) - ((_tmp8 * (_tmp23 * _tmp25)) / _tmp4)) - ((_tmp8 * (m * _tmp25)) / _tmp4);
+  const Scalar _tmp17 = m * m;
+  const Scalar _tmp18 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp19 = H1 * (E * (Ca * _tmp18));
+  const Scalar _tmp20 = Ca * Ca;
+  const Scalar _tmp21 = Sa * (H1 * (E * (_tmp0 * Scalar(3.0))));
+  const Scalar _tmp22 = _tmp3 * _tmp3;
+  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp5, _tmp7);
+  const Scalar _tmp24 = Sa * (H1 * (E * (_tmp0 * Scalar(4.0))));
+  const Scalar _tmp25 = H1 * (E * _tmp18);
+  return ((((((((((((_tmp23 * (_tmp17 * _tmp24)) / _tmp22) + (((_tmp8 * (m * _tmp25)) / _tmp4) + ((_tmp8 * _tmp25) / _tmp4))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp16 * (H1 * (E * (_tmp11 * Scalar(2.0))))) / _tmp13)) - ((_tmp8 * (_tmp17 * _tmp19)) / _tmp4)) - ((_tmp8 * (m * _tmp19)) / _tmp4)) - ((_tmp16 * (Sa * (H1 * (E * (_tmp11 * Scalar(3.0)))))) / (_tmp12 * _tmp20))) - ((_tmp8 * (_tmp17 * _tmp21)) / _tmp4)) - ((_tmp8 * (m * _tmp21)) / _tmp4)) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp14, _tmp15) * (Sa * (H1 * (E * (_tmp11 * Scalar(4.0)))))) / ((_tmp12 * _tmp12) * (Ca * _tmp20)))) - ((_tmp23 * _tmp24) / _tmp22);
 }
 
 // The same from the moments of (1 + v^2) g' + v g (no end point differentiated), for
@@ -165,21 +166,21 @@ inline Scalar parametric_wave_curve_beyond_branch_load_slope_factor_by_parts(con
   const Scalar _tmp12 = sqrt(-Ca);
   const Scalar _tmp13 = Scalar(1.0) - _tmp2;
   const Scalar _tmp14 = _tmp13 * (_tmp13 * _tmp13);
-  const Scalar _tmp15 = m * m;
-  const Scalar _tmp16 = -((Ca * (Scalar(1.0) - m)) / _tmp13);
-  const Scalar _tmp17 = _tmp5 / _tmp13;
-  const Scalar _tmp18 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp16, _tmp17);
-  const Scalar _tmp19 = H1 * (E * (_tmp9 * _tmp12));
-  const Scalar _tmp20 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp16, _tmp17);
+  const Scalar _tmp15 = -((Ca * (Scalar(1.0) - m)) / _tmp13);
+  const Scalar _tmp16 = _tmp5 / _tmp13;
+  const Scalar _tmp17 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp15, _tmp16);
+  const Scalar _tmp18 = H1 * (E * (_tmp9 * _tmp12));
+  const Scalar _tmp19 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp15, _tmp16);
+  const Scalar _tmp20 = m * m;
   const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp4, _tmp6);
   const Scalar _tmp22 = Ca * _tmp8;
-  const Scalar _tmp23 = m * (H1 * (E * (_tmp0 * Scalar(3.0))));
-  const Scalar _tmp24 = _tmp12 * Scalar(3.0);
-  const Scalar _tmp25 = H1 * (E * (Ca * _tmp24));
-  const Scalar _tmp26 = m * _tmp25;
-  const Scalar _tmp27 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp16, _tmp17);
-  const Scalar _tmp28 = H1 * (E * (_tmp9 * _tmp24));
-  return (((((((((((_tmp10 * (m * (H1 * (E * (_tmp0 * Scalar(4.0)))))) / _tmp11) + (((_tmp21 * _tmp23) / _tmp8) + (((_tmp27 * (_tmp15 * (H1 * (E * (Ca * (_tmp12 * Scalar(5.0))))))) / _tmp14) + (((_tmp26 * _tmp27) / _tmp14) + (((_tmp20 * _tmp26) / _tmp14) + (((_tmp20 * (_tmp15 * _tmp25)) / _tmp14) + (((_tmp20 * (H1 * (E * _tmp12))) / _tmp14) + (((_tmp18 * _tmp19) / _tmp14) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp4, _tmp6) * _tmp7) / _tmp1) + ((_tmp7 * _tmp10) / _tmp11)))))))))) - ((_tmp18 * (_tmp15 * _tmp19)) / _tmp14)) - ((_tmp21 * (H1 * (E * (_tmp0 * Scalar(2.0))))) / _tmp22)) - ((_tmp10 * _tmp23) / _tmp22)) - ((_tmp21 * (m * (H1 * (E * (_tmp0 * Scalar(5.0)))))) / _tmp22)) - ((_tmp27 * (H1 * (E * (Ca * (_tmp12 * Scalar(2.0)))))) / _tmp14)) - ((_tmp27 * (_tmp15 * _tmp28)) / _tmp14)) - ((_tmp27 * (m * _tmp28)) / _tmp14)) - ((_tmp20 * (m * (H1 * (E * _tmp24)))) / _tmp14)) - ((_tmp20 * (_tmp15 * (H1 * (E * (_tmp12 * Scalar(4.0)))))) / _tmp14);
+  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp15, _tmp16);
+  const Scalar _tmp24 = m * (H1 * (E * (_tmp0 * Scalar(3.0))));
+  const Scalar _tmp25 = _tmp12 * Scalar(3.0);
+  const Scalar _tmp26 = H1 * (E * (_tmp9 * _tmp25));
+  const Scalar _tmp27 = H1 * (E * (Ca * _tmp25));
+  const Scalar _tmp28 = m * _tmp27;
+  return (((((((((((_tmp23 * (_tmp20 * (H1 * (E * (Ca * (_tmp12 * Scalar(5.0))))))) / _tmp14) + (((_tmp10 * (m * (H1 * (E * (_tmp0 * Scalar(4.0)))))) / _tmp11) + (((_tmp23 * _tmp28) / _tmp14) + (((_tmp19 * _tmp28) / _tmp14) + (((_tmp19 * (_tmp20 * _tmp27)) / _tmp14) + (((_tmp21 * _tmp24) / _tmp8) + (((_tmp19 * (H1 * (E * _tmp12))) / _tmp14) + (((_tmp17 * _tmp18) / _tmp14) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp4, _tmp6) * _tmp7) / _tmp1) + ((_tmp7 * _tmp10) / _tmp11)))))))))) - ((_tmp17 * (_tmp18 * _tmp20)) / _tmp14)) - ((_tmp21 * (H1 * (E * (_tmp0 * Scalar(2.0))))) / _tmp22)) - ((_tmp23 * (H1 * (E * (Ca * (_tmp12 * Scalar(2.0)))))) / _tmp14)) - ((_tmp10 * _tmp24) / _tmp22)) - ((_tmp23 * (_tmp20 * _tmp26)) / _tmp14)) - ((_tmp23 * (m * _tmp26)) / _tmp14)) - ((_tmp19 * (m * (H1 * (E * _tmp25)))) / _tmp14)) - ((_tmp19 * (_tmp20 * (H1 * (E * (_tmp12 * Scalar(4.0)))))) / _tmp14)) - ((_tmp21 * (m * (H1 * (E * (_tmp0 * Scalar(5.0)))))) / _tmp22);
 }
 
 // g(v) of eq. 5 on the top branch (|v| < beta).
@@ -217,6 +218,98 @@ inline Scalar parametric_wave_curve_flank_height_slope(const Scalar& H1, const S
   using std::sqrt;
   const Scalar _tmp0 = Scalar(1.0) - (Cx * m);
   return (H1 + (m * H1)) / (_tmp0 * _tmp0);
+}
+
+// p_fc(x) of full contact over the whole period, both branches (derive/full_contact.hpp): p = P/(2 b1) +
+// p_fc, while it is >= 0; Psi from wavecontact/conjugate_logarithm.hpp. Its terms cancel next to a pole of
+// the other branch's formula: beyond twice the own slope there, the side's form below.
+// Total ops: 95 (24 add, 49 mul, 17 div, 0 sqrt, 2 neg, 3 moment calls), 24 temporaries
+template <typename Scalar>
+inline Scalar parametric_wave_curve_full_contact_pressure(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  const Scalar _tmp0 = Cx * Cx;
+  const Scalar _tmp1 = _tmp0 * _tmp0;
+  const Scalar _tmp2 = _tmp1 * m;
+  const Scalar _tmp3 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp4 = Scalar(1.0) + (m * ((m * ((m * ((m * (_tmp1 + _tmp2)) - _tmp3)) - _tmp3)) + Scalar(1.0)));
+  const Scalar _tmp5 = Cx * _tmp0;
+  const Scalar _tmp6 = m + Scalar(1.0);
+  const Scalar _tmp7 = (Scalar(1.0) - m) / _tmp6;
+  const Scalar _tmp8 = Scalar(2.0) / _tmp6;
+  const Scalar _tmp9 = wavecontact::edge_moment<Scalar>(1, 2, _tmp7, _tmp8);
+  const Scalar _tmp10 = m * m;
+  const Scalar _tmp11 = _tmp9 * (_tmp5 * H1);
+  const Scalar _tmp12 = _tmp10 * _tmp10;
+  const Scalar _tmp13 = Cx * H1;
+  const Scalar _tmp14 = Scalar(1.0) + (m * (m * ((m * _tmp2) - _tmp3)));
+  const Scalar _tmp15 = Cx * Scalar(2.0);
+  const Scalar _tmp16 = wavecontact::conjugate_logarithm<Scalar>(Scalar(1.0) - Cx, Cx + Scalar(1.0), -_tmp15);
+  const Scalar _tmp17 = H1 * _tmp16;
+  const Scalar _tmp18 = _tmp13 * _tmp16;
+  const Scalar _tmp19 = wavecontact::edge_moment<Scalar>(0, 2, _tmp7, _tmp8);
+  const Scalar _tmp20 = H1 * (Scalar(2.0) * _tmp5);
+  const Scalar _tmp21 = _tmp19 * _tmp20;
+  const Scalar _tmp22 = m * _tmp10;
+  const Scalar _tmp23 = H1 * _tmp15;
+  return -((E * (Scalar(2.0) * ((((((((((_tmp10 * (_tmp19 * (H1 * (Cx * Scalar(6.0))))) / _tmp4) + (((_tmp22 * (_tmp9 * _tmp23)) / _tmp4) + (((m * _tmp17) / _tmp14) + (((_tmp10 * _tmp17) / _tmp14) + (((_tmp9 * _tmp13) / _tmp4) + (((_tmp10 * _tmp11) / _tmp4) + ((_tmp11 * _tmp12) / _tmp4))))))) - ((_tmp10 * _tmp18) / _tmp14)) - ((m * _tmp18) / _tmp14)) - ((_tmp10 * _tmp21) / _tmp4)) - ((_tmp22 * (_tmp9 * _tmp20)) / _tmp4)) - ((_tmp12 * _tmp21) / _tmp4)) - ((_tmp19 * _tmp23) / _tmp4)) - ((_tmp10 * (_tmp9 * (H1 * (Cx * Scalar(3.0))))) / _tmp4)))) / b1);
+}
+
+// The same for Cx above the branch point's cosine, the flank's moment with its Cauchy factor (J'_{j,l}).
+// Total ops: 89 (27 add, 35 mul, 20 div, 0 sqrt, 2 neg, 5 moment calls), 21 temporaries
+template <typename Scalar>
+inline Scalar parametric_wave_curve_full_contact_pressure_top(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Cx * Cx) * m;
+  const Scalar _tmp1 = Cx * Scalar(2.0);
+  const Scalar _tmp2 = Scalar(1.0) + (m * ((m * (_tmp0 + (Cx * ((Cx * Scalar(1.0)) + Scalar(2.0))))) + (Scalar(1.0) + _tmp1)));
+  const Scalar _tmp3 = m + Scalar(1.0);
+  const Scalar _tmp4 = (Scalar(1.0) - m) / _tmp3;
+  const Scalar _tmp5 = Scalar(2.0) / _tmp3;
+  const Scalar _tmp6 = wavecontact::edge_moment<Scalar>(1, 2, _tmp4, _tmp5);
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = Cx * H1;
+  const Scalar _tmp9 = _tmp6 * _tmp8;
+  const Scalar _tmp10 = Scalar(1.0) + (m * (_tmp0 + _tmp1));
+  const Scalar _tmp11 = Cx + Scalar(1.0);
+  const Scalar _tmp12 = -((Scalar(1.0) - Cx) / _tmp11);
+  const Scalar _tmp13 = _tmp1 / _tmp11;
+  const Scalar _tmp14 = wavecontact::quadratic_moment<Scalar>(0, 1, _tmp12, _tmp13);
+  const Scalar _tmp15 = H1 * _tmp6;
+  const Scalar _tmp16 = wavecontact::edge_moment<Scalar>(0, 2, _tmp4, _tmp5);
+  const Scalar _tmp17 = _tmp1 * H1;
+  const Scalar _tmp18 = _tmp16 * _tmp17;
+  const Scalar _tmp19 = H1 * Scalar(4.0);
+  const Scalar _tmp20 = m + (_tmp11 + (Cx * m));
+  return -((((((((((((((_tmp19 * wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp12, _tmp13, _tmp4, _tmp5)) / _tmp20) + (((m * (_tmp6 * (Scalar(2.0) * H1))) / _tmp2) + (((H1 * _tmp14) / _tmp10) + (((_tmp14 * (m * H1)) / _tmp10) + (((_tmp7 * _tmp9) / _tmp2) + (_tmp9 / _tmp2)))))) - ((_tmp7 * _tmp15) / _tmp2)) - (_tmp15 / _tmp2)) - ((_tmp14 * (m * _tmp8)) / _tmp10)) - ((_tmp8 * _tmp14) / _tmp10)) - ((_tmp7 * _tmp18) / _tmp2)) - (_tmp18 / _tmp2)) - ((m * (_tmp6 * _tmp17)) / _tmp2)) - ((m * (_tmp16 * _tmp19)) / _tmp2)) - ((_tmp19 * wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp12, _tmp13, _tmp4, _tmp5)) / _tmp20)) * E) / b1);
+}
+
+// The same for Cx below the branch point's cosine, the top's moment with its Cauchy factor (J'_{j,l}).
+// Total ops: 90 (27 add, 35 mul, 20 div, 0 sqrt, 3 neg, 5 moment calls), 21 temporaries
+template <typename Scalar>
+inline Scalar parametric_wave_curve_full_contact_pressure_flank(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Cx) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Cx * Cx) * m;
+  const Scalar _tmp1 = Cx * Scalar(2.0);
+  const Scalar _tmp2 = Scalar(1.0) + (m * ((m * (_tmp0 + (Cx * ((Cx * Scalar(1.0)) - Scalar(2.0))))) + (Scalar(1.0) - _tmp1)));
+  const Scalar _tmp3 = m + Scalar(1.0);
+  const Scalar _tmp4 = (Scalar(1.0) - m) / _tmp3;
+  const Scalar _tmp5 = Scalar(2.0) / _tmp3;
+  const Scalar _tmp6 = wavecontact::edge_moment<Scalar>(1, 2, _tmp4, _tmp5);
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = Cx * H1;
+  const Scalar _tmp9 = _tmp6 * _tmp8;
+  const Scalar _tmp10 = H1 * _tmp6;
+  const Scalar _tmp11 = Scalar(1.0) + (m * (_tmp0 - _tmp1));
+  const Scalar _tmp12 = Scalar(1.0) - Cx;
+  const Scalar _tmp13 = -((Cx + Scalar(1.0)) / _tmp12);
+  const Scalar _tmp14 = -(_tmp1 / _tmp12);
+  const Scalar _tmp15 = wavecontact::quadratic_moment<Scalar>(0, 1, _tmp13, _tmp14);
+  const Scalar _tmp16 = wavecontact::edge_moment<Scalar>(0, 2, _tmp4, _tmp5);
+  const Scalar _tmp17 = _tmp1 * H1;
+  const Scalar _tmp18 = _tmp16 * _tmp17;
+  const Scalar _tmp19 = (_tmp3 - Cx) - (Cx * m);
+  const Scalar _tmp20 = H1 * Scalar(4.0);
+  return -((((((((((((((_tmp20 * wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp13, _tmp14, _tmp4, _tmp5)) / _tmp19) + (((m * (_tmp16 * _tmp20)) / _tmp2) + ((_tmp10 / _tmp2) + ((_tmp9 / _tmp2) + (((_tmp7 * _tmp9) / _tmp2) + ((_tmp7 * _tmp10) / _tmp2)))))) - ((_tmp15 * (m * _tmp8)) / _tmp11)) - ((_tmp8 * _tmp15) / _tmp11)) - ((_tmp15 * (m * H1)) / _tmp11)) - ((H1 * _tmp15) / _tmp11)) - ((_tmp7 * _tmp18) / _tmp2)) - (_tmp18 / _tmp2)) - ((m * (_tmp6 * _tmp17)) / _tmp2)) - ((m * (_tmp6 * (Scalar(2.0) * H1))) / _tmp2)) - ((wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp13, _tmp14, _tmp4, _tmp5) * _tmp20) / _tmp19)) * E) / b1);
 }
 
 // Contact pressure p(x) on the top branch (|x^| below the branch point) of a zone reaching beyond the branch point, eq. 12
@@ -721,6 +814,12 @@ inline ProfileEvaluator parametric_wave_curve_profile_evaluator() {
   e.height_slope = [](const double* q, double Cx) {
     return Cx >= 0.0 ? parametric_wave_curve_height_slope<double>(q[0], q[1], Cx)
                                   : parametric_wave_curve_flank_height_slope<double>(q[0], q[1], Cx);
+  };
+  e.full_contact_pressure = [](const double* q, double E, double b1, double Cx) {
+    const double top = std::fabs(parametric_wave_curve_height_slope<double>(q[0], q[1], Cx)), flank = std::fabs(parametric_wave_curve_flank_height_slope<double>(q[0], q[1], Cx));
+    if (Cx > 0.0 && flank > 2 * top) return parametric_wave_curve_full_contact_pressure_top<double>(E, b1, q[0], q[1], Cx);
+    if (Cx < 0.0 && top > 2 * flank) return parametric_wave_curve_full_contact_pressure_flank<double>(E, b1, q[0], q[1], Cx);
+    return parametric_wave_curve_full_contact_pressure<double>(E, b1, q[0], q[1], Cx);
   };
   e.harmonic = 1;
   e.pole_squares = [](const double* q, double* tau) {

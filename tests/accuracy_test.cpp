@@ -13,9 +13,14 @@
 #include <sstream>
 #include <vector>
 
+#include "generate.hpp"
+#include <boost/math/special_functions/cos_pi.hpp>
+
 #include "high_precision.hpp"
 #include "isa_under_test.hpp"
+#include "user_profile.hpp"
 #include "waviness.hpp"
+#include "wavecontact/profile.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/waviness.hpp"
@@ -231,6 +236,59 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
         const double error = (GiNaC::abs(wavecontact::test::exact(wavecontact::pressure(params, a, p.x)) - reference) / scale).to_double();
         (p.x < 0.5 * b1 ? top : flank).add(error / 2.220446049250313e-16, p);
       }
+    }
+  }
+  check(top);
+  check(flank);
+}
+
+// Full contact of eq. 2 (the built-in profile parametric_wave_curve, built with abs()) in closed
+// form, against a derived form at 40 digits (tests/full_contact_test.cpp proves them equal to the
+// conjugate's quadrature), relative to the largest |p_fc|: next to the branch point b1/2, next to
+// the poles of the other branch's formula (cos = +-1/m) and at both ends of the period.
+BOOST_AUTO_TEST_CASE(full_contact_of_eq2_within_64_eps) {
+  wavecontact::test::Precision precision(wavecontact::test::reference_digits);
+  namespace derive = wavecontact::derive;
+  const auto specs = derive::example_profiles();
+  const auto spec = std::find_if(specs.begin(), specs.end(), [](const auto& p) { return p.name == "parametric_wave_curve"; });
+  BOOST_TEST_REQUIRE((spec != specs.end()));
+  const derive::ProfileDerivation d = derive::derive_profile(*spec);
+  ErrorReport top{"full contact, eq. 2, |x| < b1/2"}, flank{"full contact, eq. 2, |x| >= b1/2"};
+  const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
+  std::size_t k = 0;
+  for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 35.0, 100.0, 1e3, 1e4}) {
+    const auto& [E, H1, b1] = scales[k++ % scales.size()];
+    const wavecontact::Profile profile({"parametric_wave_curve", {{"H1", H1}, {"m", m}}, b1, E});
+    std::vector<double> xs{0, 1e-9 * b1, 0.2 * b1, 0.45 * b1, 0.5 * b1 * (1 - 1e-3), 0.5 * b1 * (1 - 1e-9),
+                           std::nextafter(0.5 * b1, 0.0), 0.5 * b1, std::nextafter(0.5 * b1, b1),
+                           0.5 * b1 * (1 + 1e-9), 0.5 * b1 * (1 + 1e-3), 0.8 * b1, b1 * (1 - 1e-9), b1};
+    if (m > 1) {  // the other branch's poles, cos(pi x/b1) = +-1/m
+      for (double side : {1.0, -1.0}) {
+        for (double shift : {0.0, 1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3}) xs.push_back(std::acos(side / m * (1 + shift)) / M_PI * b1);
+      }
+    }
+    std::vector<std::pair<double, GiNaC::numeric>> references;
+    GiNaC::numeric scale = 0;
+    for (double x : xs) {
+      // At the runtime's own Cx: near the branch point and the other branch's poles, p_fc varies on
+      // the scale 1/m of cos x^, so that the rounding of x/b1 alone moves it by eps |x dp/dx|, up
+      // to 1e5 eps at m = 1e4 (the problem's conditioning in x, not the evaluator's error).
+      const GiNaC::numeric Cx = wavecontact::test::exact(boost::math::cos_pi(x / b1));
+      // Within 1e-6 of the branch point the side forms' logarithms are large at 40 digits too: the
+      // whole form there (the poles of either branch's formula lie at |Cx| = 1/m >= 1e-4).
+      const GiNaC::ex& form = GiNaC::abs(Cx) < GiNaC::numeric(1, 1000000) ? d.full_contact_pressure
+                              : Cx > 0                                    ? d.full_contact_pressure_top
+                                                                          : d.full_contact_pressure_flank;
+      const GiNaC::exmap point{{derive::sym::E(), wavecontact::test::exact(E)}, {derive::sym::b1(), wavecontact::test::exact(b1)},
+                               {d.parameters[0], wavecontact::test::exact(H1)}, {d.parameters[1], wavecontact::test::exact(m)},
+                               {derive::sym::Cx(), Cx}};
+      references.emplace_back(x, GiNaC::ex_to<GiNaC::numeric>(form.subs(point).evalf()));
+      scale = std::max(scale, GiNaC::abs(references.back().second));
+    }
+    for (const auto& [x, reference] : references) {
+      const double got = profile.full_contact_pressure(0, x);
+      const double error = (GiNaC::abs(wavecontact::test::exact(got) - reference) / scale).to_double();
+      (x < 0.5 * b1 ? top : flank).add(error / 2.220446049250313e-16, PhysicalPoint{E, H1, b1, m, b1, x});
     }
   }
   check(top);

@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(pole_bounds_the_reach) {
 }
 
 // Full contact in closed form (derive/full_contact.hpp) against the cosine coefficients of the
-// profile (fourier_reference.hpp); eq. 2 built with abs() has none, a pole on the period none.
+// profile (fourier_reference.hpp); a pole on the period has none.
 BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
   kinked(1, 1);  // registers
   const double b1 = 10, E = 2, P = 3;
@@ -157,8 +157,6 @@ BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
   }
   const Profile pole({"analytic_wave", {{"H1", 1.0}, {"m", 2.0}}, b1, E});
   BOOST_CHECK_THROW(pole.full_contact_pressure(P, 0), std::domain_error);
-  const Profile eq2({"parametric_wave_curve", {{"H1", 1.0}, {"m", 0.5}}, b1, E});
-  BOOST_CHECK_THROW(eq2.full_contact_pressure(P, 0), std::domain_error);
   BOOST_CHECK_THROW(kinked(1, 0.2).full_contact_pressure(-1, 0), std::domain_error);
 }
 
@@ -185,4 +183,37 @@ BOOST_AUTO_TEST_CASE(full_contact_agrees_with_the_contact_solver) {
   }
   BOOST_TEST_MESSAGE("analytic_wave full contact: solver vs closed form " << worst / contact.max_pressure());
   BOOST_TEST(worst <= 1e-12 * contact.max_pressure());
+}
+
+// Full contact of profiles built with abs() through the runtime (the adapter's choice of form,
+// the scaling by b1 and E) against the cosine coefficients of the profile: their sum k y_k
+// converges like 1/N only (y'' jumps at the branch point), so this checks the wiring to 3e-5;
+// the digits are measured in tests/accuracy_test.cpp and proven in tests/full_contact_test.cpp.
+// (The multi-zone solver, whose panels do not split at the branch point, agrees to 1e-5 only
+// here, and fails for eq. 2 at m = 3.)
+BOOST_AUTO_TEST_CASE(full_contact_of_profiles_built_with_abs) {
+  kinked(1, 1);  // registers
+  const double b1 = 10, E = 2;
+  for (double m : {0.5, 3.0}) {
+    const Profile eq2({"parametric_wave_curve", {{"H1", 0.7}, {"m", m}}, b1, E});
+    const auto y = [&](long double x) { return 0.7L * (m + 1) * std::cos(x) / (m * std::fabs(std::cos(x)) + 1); };
+    double worst = 0, scale = 0;
+    for (double x : {0.0, 1.0, 3.0, 4.9, 5.0, 5.1, 7.5, 10.0, -4.0}) {
+      const double expected = E / 2 * pi / b1 * static_cast<double>(fourier_slope_sum(y, pi * x / b1, 4096));
+      worst = std::max(worst, std::fabs(eq2.full_contact_pressure(0, x) - expected));
+      scale = std::max(scale, std::fabs(expected));
+    }
+    BOOST_TEST_MESSAGE("eq. 2, m = " << m << ": full contact within " << worst / scale << " of max |p| of the sum");
+    BOOST_TEST(worst <= 3e-5 * scale, "m = " << m << ": " << worst / scale);
+  }
+  const Profile profile = kinked(1, 0.2);  // b1 = pi, E* = 1
+  const auto y = [](long double x) { return std::cos(x) + 0.2L * (5 * std::cos(x) - 3) * std::fabs(5 * std::cos(x) - 3); };
+  double worst = 0, scale = 0;
+  for (double x : {0.0, 0.5, kink, 1.5, 2.5, pi}) {
+    const double expected = static_cast<double>(fourier_slope_sum(y, x, 4096)) / 2;
+    worst = std::max(worst, std::fabs(profile.full_contact_pressure(0, x) - expected));
+    scale = std::max(scale, std::fabs(expected));
+  }
+  BOOST_TEST_MESSAGE("kinked: full contact within " << worst / scale << " of max |p| of the sum");
+  BOOST_TEST(worst <= 3e-5 * scale, worst / scale);
 }

@@ -5,8 +5,7 @@
 // integrand is bounded, with kinks there): the whole form everywhere, the form of the point's
 // side (the other piece's Cauchy factor kept) off the branch point, including next to the poles
 // of the other branch's formula. The same reference checks the rational profile's residue form
-// first, which tests/branch_profile_test.cpp checks against cosine coefficients. The branched
-// forms are not emitted yet: their double accuracy is not yet that of the other evaluators.
+// first, which tests/branch_profile_test.cpp checks against cosine coefficients.
 #define BOOST_TEST_MODULE full_contact
 #include <boost/test/unit_test.hpp>
 
@@ -17,8 +16,6 @@
 #include <tuple>
 #include <vector>
 
-#include "block_keer.hpp"
-#include "full_contact.hpp"
 #include "symbols.hpp"
 #include "tanh_sinh_reference.hpp"
 #include "user_profile.hpp"
@@ -68,9 +65,7 @@ struct Case {
 
 void check_case(const Case& c, const std::vector<numeric>& xs) {
   const ProfileDerivation d = derive_profile({"profile", c.expression, c.parameters});
-  const bool branched = d.branches.branched;
-  const ex top = in_cosine(d.branches.top);
-  const ex whole = branched ? full_contact_pressure(top, d.flank_height, d.branches.cosine) : d.full_contact_pressure;
+
   const numeric E(3, 2);
   GiNaC::exmap point{{sym::E(), E}, {sym::b1(), GiNaC::Pi}};
   for (std::size_t i = 0; i < d.parameters.size(); ++i) point[d.parameters[i]] = c.values[i];
@@ -83,11 +78,10 @@ void check_case(const Case& c, const std::vector<numeric>& xs) {
     const numeric reference = conjugate_slope(c.slope, x, c.branch, E);
     scale = std::max(scale, GiNaC::abs(reference));
     const std::string at = ", x^ = " + std::to_string(x.to_double());
-    values.emplace_back("whole" + at, GiNaC::ex_to<numeric>(whole.subs(point).evalf()), reference);
-    if (branched && x != c.branch) {
+    values.emplace_back("whole" + at, GiNaC::ex_to<numeric>(d.full_contact_pressure.subs(point).evalf()), reference);
+    if (d.branches.branched && x != c.branch) {
       const bool on_top = x < c.branch;
-      const ex side = on_top ? full_contact_pressure_on_side(top, d.flank_height, d.branches.cosine, true)
-                             : full_contact_pressure_on_side(d.flank_height, top, d.branches.cosine, false);
+      const ex& side = on_top ? d.full_contact_pressure_top : d.full_contact_pressure_flank;
       values.emplace_back((on_top ? "top" : "flank") + at, GiNaC::ex_to<numeric>(side.subs(point).evalf()), reference);
     }
   }

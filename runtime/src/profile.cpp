@@ -213,7 +213,7 @@ double Profile::full_contact_pressure(double P, double x) const {
   constexpr const char* function = "wavecontact::Profile::full_contact_pressure";
   if (!evaluator_.full_contact_pressure) {
     throw std::domain_error(std::string(function) + ": profile " + params_.name +
-                            " has no closed form of full contact (it is built with abs())");
+                            " has no closed form of full contact (its evaluators were registered without one)");
   }
   if (reach_ < params_.b1) {
     throw std::domain_error(std::string(function) + ": profile " + params_.name + " has a pole at x = " +

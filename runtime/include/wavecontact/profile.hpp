@@ -63,8 +63,8 @@ struct ProfileEvaluator {
   double (*height)(const double* q, double Cx) = nullptr;
   double (*height_slope)(const double* q, double Cx) = nullptr;
   int harmonic = 1;
-  // Full contact: p_fc(x) in Cx (derive/full_contact.hpp), p = P/(2 b1) + p_fc; none for a
-  // profile built with abs().
+  // Full contact: p_fc(x) in Cx (derive/full_contact.hpp), p = P/(2 b1) + p_fc, for a profile
+  // built with abs() over both branches.
   double (*full_contact_pressure)(const double* q, double E, double b1, double Cx) = nullptr;
   // The poles tau_i = tan^2(x^_i/2) of the profile that depend on the parameters.
   void (*pole_squares)(const double* q, double* tau) = nullptr;
@@ -114,7 +114,7 @@ class Profile {
   // Full contact (MATH.md fact 11) in closed form: p(x) = P/(2 b1) + p_fc(x), the solution
   // for the load P while it is >= 0 everywhere (from the onset load -2 b1 min p_fc on).
   // Throws std::domain_error if P is not finite and >= 0, if the profile has a pole on the
-  // period (reach() < b1), or if it has no closed form (built with abs()).
+  // period (reach() < b1), or if its evaluators were registered without one.
   double full_contact_pressure(double P, double x) const;
 
  private:
