@@ -96,14 +96,27 @@ Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.
   auto s = std::make_shared<detail::SurfaceSlope>();
   s->height = [e, q](double c) { return e.height(q.data(), c); };
   s->slope = [e, q](double c) { return e.height_slope(q.data(), c); };
-  // The poles tau = tan^2(x^/2) off the period are at s = (1 - tau)/(1 + tau).
-  std::vector<double> tau(static_cast<std::size_t>(e.pole_count));
-  e.pole_squares(q.data(), tau.data());
-  std::vector<std::complex<double>> poles;
-  for (double t : tau) {
-    if (std::isfinite(t) && t != -1) poles.emplace_back((1 - t) / (1 + t));
+  // The poles tau = tan^2(x^/2) off the period are at s = (1 - tau)/(1 + tau). A profile built
+  // with abs() has a kink at its branch point, and each piece the poles of its own branch's
+  // formula continued (those of eq. 2 at cos x^ = -+1/m, on the other piece for m > 1).
+  const auto poles_at = [&q](void (*squares)(const double*, double*), int count) {
+    std::vector<double> tau(static_cast<std::size_t>(count));
+    if (count > 0) squares(q.data(), tau.data());
+    std::vector<std::complex<double>> poles;
+    for (double t : tau) {
+      if (std::isfinite(t) && t != -1) poles.emplace_back((1 - t) / (1 + t));
+    }
+    return poles;
+  };
+  const std::vector<std::complex<double>> top = poles_at(e.pole_squares, e.pole_count);
+  if (e.branch.beta > 0) {
+    const double cosine = e.branch.cosine;
+    const std::vector<std::complex<double>> flank = poles_at(e.branch.flank_pole_squares, e.branch.flank_pole_count);
+    s->kinks = {cosine};
+    s->singularities = [top, flank, cosine](double lo, double) { return lo >= cosine ? top : flank; };
+  } else {
+    s->singularities = [top](double, double) { return top; };
   }
-  s->singularities = [poles](double, double) { return poles; };
   s->resolution = resolution(e.harmonic);
   s->E = profile.params().E;
   slope_ = std::move(s);
