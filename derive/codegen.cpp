@@ -111,7 +111,7 @@ class Graph {
       return {false, intern({Op::Call, call.str(), lower(e.op(2)), lower(e.op(3)), lower(e.op(4)), lower(e.op(5))})};
     }
     if (GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == "conjugate_logarithm") {
-      // Xi(a, b, a - b) of full contact for a profile built with abs() (full_contact.hpp).
+      // Psi(a, b, a - b) of full contact for a profile built with abs() (full_contact.hpp).
       return {false, intern({Op::Call, "wavecontact::conjugate_logarithm<Scalar>(", lower(e.op(0)), lower(e.op(1)),
                              lower(e.op(2))})};
     }
