@@ -270,6 +270,21 @@ BENCHMARK(BM_pressure_beyond_half);
 void BM_pressure_beyond_half_near_kink(benchmark::State& state) { pressure_points(state, points_near_kink(), false); }
 BENCHMARK(BM_pressure_beyond_half_near_kink);
 
+// The same zone as an array of 10^4 points, on one thread: the zone's atoms once, the Cauchy
+// part's atoms tabulated in log(1 + y) (runtime/src/cauchy_atom_table.hpp).
+void BM_pressure_beyond_half_array(benchmark::State& state) {
+  const Eigen::ArrayXd xs = Eigen::ArrayXd::LinSpaced(state.range(0), -0.999 * 7.5, 0.999 * 7.5);
+  Eigen::ArrayXd p(xs.size());
+  set_array_kernel_threads(1);
+  for (auto _ : state) {
+    pressure(waviness, 7.5, xs, p);
+    benchmark::DoNotOptimize(p.data());
+  }
+  set_array_kernel_threads(0);
+  state.SetItemsProcessed(state.iterations() * xs.size());
+}
+BENCHMARK(BM_pressure_beyond_half_array)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
 void BM_pressure_beyond_half_quadrature(benchmark::State& state) { pressure_points(state, points_over_zone(), true); }
 BENCHMARK(BM_pressure_beyond_half_quadrature)->Unit(benchmark::kMicrosecond);
 

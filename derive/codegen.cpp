@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -322,12 +323,36 @@ class Printer {
 
 }  // namespace
 
+GiNaC::ex array_element(const std::string& array, int k) {
+  // One symbol per name (GiNaC compares symbols by identity), so that expressions built apart agree.
+  static std::map<std::string, GiNaC::symbol> elements;
+  const std::string name = array + "[" + std::to_string(k) + "]";
+  return elements.try_emplace(name, name).first->second;
+}
+
 std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   // Each statement is lowered on its own (its CSE is local); earlier targets are inputs.
   InputIndex inputs;
   for (const ex& argument : f.arguments) {
     inputs.emplace(GiNaC::ex_to<GiNaC::symbol>(argument).get_name(), static_cast<int>(inputs.size()));
   }
+  // The arrays' elements that the expressions use, as inputs; and which arrays they use.
+  std::set<std::string> used_arrays;
+  const auto add_elements = [&](const ex& e) {
+    for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+      if (!GiNaC::is_a<GiNaC::symbol>(*i)) continue;
+      const std::string& name = GiNaC::ex_to<GiNaC::symbol>(*i).get_name();
+      for (const std::string& array : f.arrays) {
+        if (name.rfind(array + "[", 0) == 0) {
+          inputs.emplace(name, static_cast<int>(inputs.size()));
+          used_arrays.insert(array);
+        }
+      }
+    }
+  };
+  add_elements(f.value);
+  for (const auto& statement : f.statements) add_elements(statement.value);
+  for (const auto& output : f.outputs) add_elements(output);
   OpCounts counts;
   std::string body;
   auto lower_and_print = [&](const ex& value, const std::string& assignment) {
@@ -365,7 +390,11 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
     for (const auto& output : f.outputs) used = used || output.has(f.arguments[i]);
     os << (i ? ", " : "") << "const Scalar& " << (used ? name : "/*" + name + "*/");
   }
+  for (const std::string& array : f.arrays) {
+    os << ", const Scalar* " << (used_arrays.count(array) ? array : "/*" + array + "*/");
+  }
   os << (returns_value ? "" : ", Scalar* out") << ") {\n  using std::sqrt;\n" << body << "}\n";
+  if (!returns_value) os << "inline constexpr int " << f.name << "_outputs = " << f.outputs.size() << ";\n";
   if (out_counts) *out_counts = counts;
   return os.str();
 }

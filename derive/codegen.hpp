@@ -31,7 +31,9 @@ struct Statement {
 
 // One emitted evaluator: `template <typename Scalar> Scalar name(const Scalar& arg...)`,
 // a straight-line program of statements followed by the returned value. With outputs
-// instead, `void name(const Scalar& arg..., Scalar* out)` stores out[k] = outputs[k].
+// instead, `void name(const Scalar& arg..., Scalar* out)` stores out[k] = outputs[k], and
+// `inline constexpr int name_outputs` gives their number. After the arguments, each array
+// `const Scalar* array` whose elements array_element(array, k) the expressions may use.
 struct EmittedFunction {
   std::string name;
   std::string doc;                          // comment lines above the function
@@ -39,7 +41,11 @@ struct EmittedFunction {
   GiNaC::ex value;
   std::vector<Statement> statements = {};
   std::vector<GiNaC::ex> outputs = {};  // if not empty, value is unused
+  std::vector<std::string> arrays = {};
 };
+
+// The symbol that denotes array[k] of an EmittedFunction's arrays.
+GiNaC::ex array_element(const std::string& array, int k);
 
 // The C++ source of one function, with its op counts in a comment.
 std::string emit_function(const EmittedFunction& function, OpCounts* counts = nullptr);

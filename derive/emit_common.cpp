@@ -1,5 +1,8 @@
 #include "emit_common.hpp"
 
+#include <algorithm>
+#include <stdexcept>
+
 #include "canonical.hpp"
 #include "symbols.hpp"
 #include "generate.hpp"
@@ -61,34 +64,92 @@ void write_moment_terms(std::ostream& os, const std::string& name, const std::ve
   }
 }
 
+namespace {
+
+bool depends_on_point(const ex& e) { return e.has(sym::Cx()) || e.has(sym::Sx()) || e.has(sym::D()); }
+
+// The atom of a term with the point's Cauchy argument y, 1 + y (y_at, one_plus_y_at in the angle
+// atoms) replaced by the symbols y, one_plus_y: the only way the point enters an atom. Throws
+// std::logic_error otherwise (the derivation then broke that structure).
+ex atom_of_cauchy_argument(MomentTerm term, const ex& y_at, const ex& one_plus_y_at, const ex& y, const ex& one_plus_y) {
+  const auto replaced = [&](ex& argument, const ex& at, const ex& symbol) {
+    if (!depends_on_point(argument)) return;
+    if (!(argument - at).normal().is_zero()) {
+      throw std::logic_error("pressure_beyond_branch: an atom's argument " + canonical_rational(argument) +
+                             " depends on the point otherwise than through the Cauchy argument " + canonical_rational(at));
+    }
+    argument = symbol;
+  };
+  replaced(term.y, y_at, y);
+  replaced(term.one_plus_y, one_plus_y_at, one_plus_y);
+  replaced(term.z, y_at, y);
+  replaced(term.one_plus_z, one_plus_y_at, one_plus_y);
+  return moment_atom(term);
+}
+
+}  // namespace
+
 std::vector<EmittedFunction> pressure_beyond_branch(const std::string& prefix, const BeyondBranch& b,
                                                     const std::vector<GiNaC::ex>& point_arguments) {
+  static const GiNaC::realsymbol y("y"), one_plus_y("one_plus_y");
   std::vector<GiNaC::ex> zone_arguments;  // the point's arguments but Cx, Sx, D
   for (const GiNaC::ex& a : point_arguments) {
-    if (!a.is_equal(sym::Cx()) && !a.is_equal(sym::Sx()) && !a.is_equal(sym::D())) zone_arguments.push_back(a);
+    if (!depends_on_point(a)) zone_arguments.push_back(a);
   }
+  std::vector<GiNaC::ex> atom_arguments = zone_arguments;
+  atom_arguments.push_back(y);
+  atom_arguments.push_back(one_plus_y);
   std::vector<EmittedFunction> functions;
   for (const bool top : {true, false}) {
     const BeyondBranch::SidePressure& p = top ? b.pressure_top : b.pressure_flank;
     const std::string name = prefix + (top ? "_top" : "_flank");
     const std::string where = top ? "on the top branch (|x^| below the branch point)" : "on the flank (beyond the branch point)";
-    const std::string point = "Contact pressure p(x) " + where + " of a zone reaching beyond the branch point, eq. 12\n"
-                              "split there (derive/beyond_branch.hpp), in parts: ";
-    functions.push_back({name + "_own", point + "the own piece's moment (I_{j,l}).", point_arguments, as_ex(p.own)});
-    functions.push_back({name + "_own_edge", "The own piece's moment in I'_{j,l} (for " + name + "_own_argument < 0).",
-                         point_arguments, as_ex(p.own_edge)});
-    functions.push_back({name + "_other_cauchy",
-                         "The other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near\n"
-                         "the other branch's pole, where _other + _jump cancel.",
-                         point_arguments, as_ex(p.other_cauchy)});
-    functions.push_back({name + "_other_cauchy_edge", "The same in J'_{j,l} (for " + name + "_other_argument < 0).",
-                         point_arguments, as_ex(p.other_cauchy_edge)});
-    functions.push_back({name + "_other", "The other piece's moment with the other branch's value at x apart (I_{j,l}).",
-                         point_arguments, as_ex(p.other)});
-    functions.push_back({name + "_other_edge", "The same in I'_{j,l} (for " + name + "_other_argument < 0).",
-                         point_arguments, as_ex(p.other_edge)});
-    functions.push_back({name + "_jump", "The jump of the branches at x times the other piece's Cauchy moment.",
-                         point_arguments, as_ex(p.jump)});
+    const auto cauchy_term = std::find_if(p.other_cauchy.begin(), p.other_cauchy.end(), [](const MomentTerm& t) { return t.cauchy; });
+    if (cauchy_term == p.other_cauchy.end()) throw std::logic_error("pressure_beyond_branch: no Cauchy factor in " + name);
+    const MomentTerm& cauchy = *cauchy_term;
+    functions.push_back({name + "_cauchy_argument",
+                         "Contact pressure p(x) " + where + " of a zone reaching beyond the branch point: eq. 12\n"
+                         "split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)\n"
+                         "at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.",
+                         point_arguments, 0, {}, {cauchy.y, cauchy.one_plus_y}});
+    const std::pair<const char*, const std::vector<MomentTerm>*> parts[] = {
+        {"own", &p.own},     {"own_edge", &p.own_edge},     {"other_cauchy", &p.other_cauchy},
+        {"other_cauchy_edge", &p.other_cauchy_edge}, {"other", &p.other}, {"other_edge", &p.other_edge},
+        {"jump", &p.jump}};
+    const char* docs[] = {
+        "the own piece's moment (I_{j,l})",
+        "the own piece's moment in I'_{j,l} (for own_argument < 0)",
+        "the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the\n"
+        "other branch's pole, where _other + _jump cancel",
+        "the same in J'_{j,l} (for other_argument < 0)",
+        "the other piece's moment with the other branch's value at x apart (I_{j,l})",
+        "the same in I'_{j,l} (for other_argument < 0)",
+        "the jump of the branches at x times the other piece's Cauchy moment"};
+    for (int k = 0; k < 7; ++k) {
+      const std::string part = name + "_" + parts[k].first;
+      std::vector<ex> atoms;
+      ex value = 0;
+      for (const MomentTerm& term : *parts[k].second) {
+        const ex atom = atom_of_cauchy_argument(term, cauchy.y, cauchy.one_plus_y, y, one_plus_y);
+        if (atom.is_equal(1)) {
+          value += term.rational * GiNaC::sqrt(term.radicand);
+          continue;
+        }
+        const auto found = std::find_if(atoms.begin(), atoms.end(), [&](const ex& a) { return a.is_equal(atom); });
+        const int index = static_cast<int>(found - atoms.begin());
+        if (found == atoms.end()) atoms.push_back(atom);
+        value += term.rational * GiNaC::sqrt(term.radicand) * array_element("atoms", index);
+      }
+      const bool at_point = std::any_of(atoms.begin(), atoms.end(), [](const ex& a) { return a.has(y) || a.has(one_plus_y); });
+      const bool zone_part = k == 0 || k == 1 || k == 4 || k == 5;  // no Cauchy factor: the runtime keeps them per zone
+      if (zone_part && at_point) throw std::logic_error("pressure_beyond_branch: " + part + " has an atom at the point");
+      functions.push_back({part + "_atoms",
+                           "The atoms of " + part + std::string(at_point ? ", at the point's Cauchy argument y" : ", of the zone") +
+                               (atoms.empty() ? " (none: out[0] = 0)." : "."),
+                           atom_arguments, 0, {}, atoms.empty() ? std::vector<ex>{0} : atoms});
+      functions.push_back({part, std::string("Part of the pressure: ") + docs[k] + ", from " + part + "_atoms.",
+                           point_arguments, value, {}, {}, {"atoms"}});
+    }
     functions.push_back({name + "_own_argument", "z of the own piece's pole factor: it selects the basis.",
                          zone_arguments, p.own_argument});
     functions.push_back({name + "_other_argument", "z of the other piece's pole factor.", zone_arguments,

@@ -33,10 +33,15 @@ void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum,
 // 1 + z, and y, 1 + y.
 void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms);
 
-// The pressure beyond a change of branch (beyond_branch.hpp) as emitted functions
-// <prefix>_<side>_<part>, side top or flank, part own, own_edge, other_cauchy, other_cauchy_edge,
-// other, other_edge, jump (of `point_arguments`), own_argument and other_argument (of the
-// parameters, Ca and Sa).
+// The pressure beyond a change of branch (beyond_branch.hpp) as emitted functions, per side
+// <prefix>_<side> (top or flank): <side>_cauchy_argument (of `point_arguments`: y and 1 + y of
+// the Cauchy factor at the point), and per part (own, own_edge, other_cauchy, other_cauchy_edge,
+// other, other_edge, jump) <side>_<part>_atoms (of the parameters, Ca, Sa, y and 1 + y: the
+// part's moment atoms, out[k]) and <side>_<part> (of `point_arguments` and those atoms). The
+// atoms of own, own_edge, other and other_edge are the zone's (they do not depend on y), those
+// of the other parts depend on the point through y alone: a caller computes the first once per
+// zone and may tabulate the others in y. Then <side>_own_argument and <side>_other_argument
+// (of the parameters, Ca and Sa).
 std::vector<EmittedFunction> pressure_beyond_branch(const std::string& prefix, const BeyondBranch& b,
                                                     const std::vector<GiNaC::ex>& point_arguments);
 

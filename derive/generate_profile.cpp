@@ -257,10 +257,17 @@ std::string branch_adapters(const ProfileDerivation& d) {
   const char* parts[] = {"own", "own_edge", "other_cauchy", "other_cauchy_edge", "other", "other_edge", "jump"};
   for (int side = 0; side < 2; ++side) {
     const std::string prefix = d.spec.name + "_beyond_branch_pressure_" + (side == 0 ? "top" : "flank") + "_";
+    os << "  e.branch.cauchy_argument[" << side << "] = [](const double* " << unused
+       << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D, double* y) {\n    "
+       << prefix << "cauchy_argument<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, y);\n  };\n";
     for (int k = 0; k < 7; ++k) {
-      os << "  e.branch.pressure_parts[" << side << "][" << k << "] = [](const double* " << unused
-         << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D) {\n    return " << prefix
-         << parts[k] << "<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D);\n  };\n";
+      os << "  e.branch.part_atoms[" << side << "][" << k << "] = [](const double* " << unused
+         << ", double E, double b1, double Ca, double Sa, double y, double one_plus_y, double* atoms) {\n    "
+         << prefix << parts[k] << "_atoms<double>(E, b1, " << q << "Ca, Sa, y, one_plus_y, atoms);\n  };\n"
+         << "  e.branch.atom_counts[" << side << "][" << k << "] = " << prefix << parts[k] << "_atoms_outputs;\n"
+         << "  e.branch.pressure_parts[" << side << "][" << k << "] = [](const double* " << unused
+         << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D, const double* atoms) {\n"
+         << "    return " << prefix << parts[k] << "<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, atoms);\n  };\n";
     }
     for (const char* argument : {"own_argument", "other_argument"}) {
       os << "  e.branch." << argument << "[" << side << "] = [](const double* " << unused

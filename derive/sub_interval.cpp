@@ -267,15 +267,16 @@ MomentTerm moment_term(ex rational, ex radicand, int j, int l, ex z, ex one_plus
   return term;
 }
 
-ex as_ex(const MomentTerm& term) {
-  const ex factor = term.rational * GiNaC::sqrt(term.radicand);
+ex moment_atom(const MomentTerm& term) {
   if (term.cauchy) {
-    return factor * (term.edge ? two_factor_edge_moment(term.j, term.l, term.y, term.one_plus_y, term.z, term.one_plus_z)
-                                : two_factor_moment(term.j, term.l, term.y, term.one_plus_y, term.z, term.one_plus_z));
+    return term.edge ? two_factor_edge_moment(term.j, term.l, term.y, term.one_plus_y, term.z, term.one_plus_z)
+                     : two_factor_moment(term.j, term.l, term.y, term.one_plus_y, term.z, term.one_plus_z);
   }
-  if (term.edge) return factor * edge_moment(term.j, term.l, term.z, term.one_plus_z);
-  return term.l == 0 ? factor : factor * quadratic_moment(term.j, term.l, term.z, term.one_plus_z);
+  if (term.edge) return edge_moment(term.j, term.l, term.z, term.one_plus_z);
+  return term.l == 0 ? ex(1) : quadratic_moment(term.j, term.l, term.z, term.one_plus_z);
 }
+
+ex as_ex(const MomentTerm& term) { return term.rational * GiNaC::sqrt(term.radicand) * moment_atom(term); }
 
 ex as_ex(const std::vector<MomentTerm>& terms) {
   ex sum = 0;

@@ -65,6 +65,10 @@ MomentTerm moment_term(GiNaC::ex rational, GiNaC::ex radicand, int j, int l, GiN
 // and the rest is small. Valid for z > 0; the term itself if l <= j or l = 0.
 std::vector<MomentTerm> large_argument_form(const MomentTerm& term);
 
+// The term's atom I_{j,l}(z), J_{j,l}(y, z), I'_{j,l}(z) or J'_{j,l}(y, z) (1 if l = 0 and no
+// Cauchy factor): as_ex(term) = rational sqrt(radicand) moment_atom(term).
+GiNaC::ex moment_atom(const MomentTerm& term);
+
 // The term as an expression, and the sum of terms.
 GiNaC::ex as_ex(const MomentTerm& term);
 GiNaC::ex as_ex(const std::vector<MomentTerm>& terms);

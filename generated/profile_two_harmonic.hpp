@@ -27,6 +27,7 @@ inline void two_harmonic_cosine_coefficients(const Scalar& H1, const Scalar& H3,
   out[2] = Scalar(0.0);
   out[3] = H3;
 }
+inline constexpr int two_harmonic_cosine_coefficients_outputs = 4;
 
 // Contact pressure p(x), |x| < a: eq. 12 solved exactly, the cosine sum in the Legendre-Dirichlet form.
 // Cost: O(K) operations, K = 3.

@@ -97,5 +97,6 @@ inline void roughness_n10_legendre(const Scalar& Ca, Scalar* out) {
   out[8] = P8;
   out[9] = P9;
 }
+inline constexpr int roughness_n10_legendre_outputs = 10;
 
 }  // namespace wavecontact::generated

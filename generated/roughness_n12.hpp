@@ -111,5 +111,6 @@ inline void roughness_n12_legendre(const Scalar& Ca, Scalar* out) {
   out[10] = P10;
   out[11] = P11;
 }
+inline constexpr int roughness_n12_legendre_outputs = 12;
 
 }  // namespace wavecontact::generated

@@ -923,5 +923,6 @@ inline void roughness_n128_legendre(const Scalar& Ca, Scalar* out) {
   out[126] = P126;
   out[127] = P127;
 }
+inline constexpr int roughness_n128_legendre_outputs = 128;
 
 }  // namespace wavecontact::generated

@@ -125,5 +125,6 @@ inline void roughness_n14_legendre(const Scalar& Ca, Scalar* out) {
   out[12] = P12;
   out[13] = P13;
 }
+inline constexpr int roughness_n14_legendre_outputs = 14;
 
 }  // namespace wavecontact::generated

@@ -139,5 +139,6 @@ inline void roughness_n16_legendre(const Scalar& Ca, Scalar* out) {
   out[14] = P14;
   out[15] = P15;
 }
+inline constexpr int roughness_n16_legendre_outputs = 16;
 
 }  // namespace wavecontact::generated

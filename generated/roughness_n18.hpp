@@ -153,5 +153,6 @@ inline void roughness_n18_legendre(const Scalar& Ca, Scalar* out) {
   out[16] = P16;
   out[17] = P17;
 }
+inline constexpr int roughness_n18_legendre_outputs = 18;
 
 }  // namespace wavecontact::generated

@@ -41,5 +41,6 @@ inline void roughness_n2_legendre(const Scalar& Ca, Scalar* out) {
   out[0] = Scalar(1.0);
   out[1] = Ca;
 }
+inline constexpr int roughness_n2_legendre_outputs = 2;
 
 }  // namespace wavecontact::generated

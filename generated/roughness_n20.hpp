@@ -167,5 +167,6 @@ inline void roughness_n20_legendre(const Scalar& Ca, Scalar* out) {
   out[18] = P18;
   out[19] = P19;
 }
+inline constexpr int roughness_n20_legendre_outputs = 20;
 
 }  // namespace wavecontact::generated

@@ -181,5 +181,6 @@ inline void roughness_n22_legendre(const Scalar& Ca, Scalar* out) {
   out[20] = P20;
   out[21] = P21;
 }
+inline constexpr int roughness_n22_legendre_outputs = 22;
 
 }  // namespace wavecontact::generated

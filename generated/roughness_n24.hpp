@@ -195,5 +195,6 @@ inline void roughness_n24_legendre(const Scalar& Ca, Scalar* out) {
   out[22] = P22;
   out[23] = P23;
 }
+inline constexpr int roughness_n24_legendre_outputs = 24;
 
 }  // namespace wavecontact::generated

@@ -1819,5 +1819,6 @@ inline void roughness_n256_legendre(const Scalar& Ca, Scalar* out) {
   out[254] = P254;
   out[255] = P255;
 }
+inline constexpr int roughness_n256_legendre_outputs = 256;
 
 }  // namespace wavecontact::generated

@@ -209,5 +209,6 @@ inline void roughness_n26_legendre(const Scalar& Ca, Scalar* out) {
   out[24] = P24;
   out[25] = P25;
 }
+inline constexpr int roughness_n26_legendre_outputs = 26;
 
 }  // namespace wavecontact::generated

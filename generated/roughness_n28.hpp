@@ -223,5 +223,6 @@ inline void roughness_n28_legendre(const Scalar& Ca, Scalar* out) {
   out[26] = P26;
   out[27] = P27;
 }
+inline constexpr int roughness_n28_legendre_outputs = 28;
 
 }  // namespace wavecontact::generated

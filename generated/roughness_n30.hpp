@@ -237,5 +237,6 @@ inline void roughness_n30_legendre(const Scalar& Ca, Scalar* out) {
   out[28] = P28;
   out[29] = P29;
 }
+inline constexpr int roughness_n30_legendre_outputs = 30;
 
 }  // namespace wavecontact::generated

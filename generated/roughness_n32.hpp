@@ -251,5 +251,6 @@ inline void roughness_n32_legendre(const Scalar& Ca, Scalar* out) {
   out[30] = P30;
   out[31] = P31;
 }
+inline constexpr int roughness_n32_legendre_outputs = 32;
 
 }  // namespace wavecontact::generated

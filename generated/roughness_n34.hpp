@@ -265,5 +265,6 @@ inline void roughness_n34_legendre(const Scalar& Ca, Scalar* out) {
   out[32] = P32;
   out[33] = P33;
 }
+inline constexpr int roughness_n34_legendre_outputs = 34;
 
 }  // namespace wavecontact::generated

@@ -279,5 +279,6 @@ inline void roughness_n36_legendre(const Scalar& Ca, Scalar* out) {
   out[34] = P34;
   out[35] = P35;
 }
+inline constexpr int roughness_n36_legendre_outputs = 36;
 
 }  // namespace wavecontact::generated

@@ -293,5 +293,6 @@ inline void roughness_n38_legendre(const Scalar& Ca, Scalar* out) {
   out[36] = P36;
   out[37] = P37;
 }
+inline constexpr int roughness_n38_legendre_outputs = 38;
 
 }  // namespace wavecontact::generated

@@ -55,5 +55,6 @@ inline void roughness_n4_legendre(const Scalar& Ca, Scalar* out) {
   out[2] = P2;
   out[3] = P3;
 }
+inline constexpr int roughness_n4_legendre_outputs = 4;
 
 }  // namespace wavecontact::generated

@@ -307,5 +307,6 @@ inline void roughness_n40_legendre(const Scalar& Ca, Scalar* out) {
   out[38] = P38;
   out[39] = P39;
 }
+inline constexpr int roughness_n40_legendre_outputs = 40;
 
 }  // namespace wavecontact::generated

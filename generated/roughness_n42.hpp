@@ -321,5 +321,6 @@ inline void roughness_n42_legendre(const Scalar& Ca, Scalar* out) {
   out[40] = P40;
   out[41] = P41;
 }
+inline constexpr int roughness_n42_legendre_outputs = 42;
 
 }  // namespace wavecontact::generated

@@ -335,5 +335,6 @@ inline void roughness_n44_legendre(const Scalar& Ca, Scalar* out) {
   out[42] = P42;
   out[43] = P43;
 }
+inline constexpr int roughness_n44_legendre_outputs = 44;
 
 }  // namespace wavecontact::generated

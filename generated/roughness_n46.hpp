@@ -349,5 +349,6 @@ inline void roughness_n46_legendre(const Scalar& Ca, Scalar* out) {
   out[44] = P44;
   out[45] = P45;
 }
+inline constexpr int roughness_n46_legendre_outputs = 46;
 
 }  // namespace wavecontact::generated

@@ -363,5 +363,6 @@ inline void roughness_n48_legendre(const Scalar& Ca, Scalar* out) {
   out[46] = P46;
   out[47] = P47;
 }
+inline constexpr int roughness_n48_legendre_outputs = 48;
 
 }  // namespace wavecontact::generated

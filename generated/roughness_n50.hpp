@@ -377,5 +377,6 @@ inline void roughness_n50_legendre(const Scalar& Ca, Scalar* out) {
   out[48] = P48;
   out[49] = P49;
 }
+inline constexpr int roughness_n50_legendre_outputs = 50;
 
 }  // namespace wavecontact::generated

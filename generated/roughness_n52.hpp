@@ -391,5 +391,6 @@ inline void roughness_n52_legendre(const Scalar& Ca, Scalar* out) {
   out[50] = P50;
   out[51] = P51;
 }
+inline constexpr int roughness_n52_legendre_outputs = 52;
 
 }  // namespace wavecontact::generated

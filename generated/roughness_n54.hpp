@@ -405,5 +405,6 @@ inline void roughness_n54_legendre(const Scalar& Ca, Scalar* out) {
   out[52] = P52;
   out[53] = P53;
 }
+inline constexpr int roughness_n54_legendre_outputs = 54;
 
 }  // namespace wavecontact::generated

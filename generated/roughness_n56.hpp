@@ -419,5 +419,6 @@ inline void roughness_n56_legendre(const Scalar& Ca, Scalar* out) {
   out[54] = P54;
   out[55] = P55;
 }
+inline constexpr int roughness_n56_legendre_outputs = 56;
 
 }  // namespace wavecontact::generated

@@ -433,5 +433,6 @@ inline void roughness_n58_legendre(const Scalar& Ca, Scalar* out) {
   out[56] = P56;
   out[57] = P57;
 }
+inline constexpr int roughness_n58_legendre_outputs = 58;
 
 }  // namespace wavecontact::generated

@@ -69,5 +69,6 @@ inline void roughness_n6_legendre(const Scalar& Ca, Scalar* out) {
   out[4] = P4;
   out[5] = P5;
 }
+inline constexpr int roughness_n6_legendre_outputs = 6;
 
 }  // namespace wavecontact::generated

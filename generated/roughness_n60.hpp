@@ -447,5 +447,6 @@ inline void roughness_n60_legendre(const Scalar& Ca, Scalar* out) {
   out[58] = P58;
   out[59] = P59;
 }
+inline constexpr int roughness_n60_legendre_outputs = 60;
 
 }  // namespace wavecontact::generated

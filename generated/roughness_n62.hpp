@@ -461,5 +461,6 @@ inline void roughness_n62_legendre(const Scalar& Ca, Scalar* out) {
   out[60] = P60;
   out[61] = P61;
 }
+inline constexpr int roughness_n62_legendre_outputs = 62;
 
 }  // namespace wavecontact::generated

@@ -475,5 +475,6 @@ inline void roughness_n64_legendre(const Scalar& Ca, Scalar* out) {
   out[62] = P62;
   out[63] = P63;
 }
+inline constexpr int roughness_n64_legendre_outputs = 64;
 
 }  // namespace wavecontact::generated

@@ -83,5 +83,6 @@ inline void roughness_n8_legendre(const Scalar& Ca, Scalar* out) {
   out[6] = P6;
   out[7] = P7;
 }
+inline constexpr int roughness_n8_legendre_outputs = 8;
 
 }  // namespace wavecontact::generated

@@ -204,68 +204,109 @@ inline Scalar waviness_height_slope(const Scalar& H1, const Scalar& m, const Sca
   return (H1 + (m * H1)) / (_tmp0 * _tmp0);
 }
 
-// Contact pressure p(x) on the top branch (|x^| below the branch point) of a zone reaching beyond the branch point, eq. 12
-// split there (derive/beyond_branch.hpp), in parts: the own piece's moment (I_{j,l}).
-// Total ops: 81 (16 add, 44 mul, 15 div, 1 sqrt, 3 neg, 2 moment calls), 18 temporaries
+// Contact pressure p(x) on the top branch (|x^| below the branch point) of a zone reaching beyond the branch point: eq. 12
+// split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
+// at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.
+// Total ops: 4 (0 add, 2 mul, 2 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_own(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_cauchy_argument(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& /*m*/, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, Scalar* out) {
+  using std::sqrt;
+  out[0] = (Ca * Sx) / D;
+  out[1] = (Cx * Sa) / D;
+}
+inline constexpr int waviness_pressure_beyond_half_top_cauchy_argument_outputs = 2;
+
+// The atoms of waviness_pressure_beyond_half_top_own, of the zone.
+// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
+template <typename Scalar>
+inline void waviness_pressure_beyond_half_top_own_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+}
+inline constexpr int waviness_pressure_beyond_half_top_own_atoms_outputs = 2;
+
+// Part of the pressure: the own piece's moment (I_{j,l}), from waviness_pressure_beyond_half_top_own_atoms.
+// Total ops: 67 (14 add, 38 mul, 13 div, 1 sqrt, 1 neg), 16 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_own(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
   const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = Scalar(1.0) + m;
-  const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = Ca * _tmp3;
-  const Scalar _tmp6 = -((Scalar(1.0) + (Ca * m)) / _tmp5);
-  const Scalar _tmp7 = -((Scalar(1.0) - Ca) / _tmp5);
-  const Scalar _tmp8 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp6, _tmp7);
-  const Scalar _tmp9 = _tmp8 * (_tmp4 * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp10 = _tmp2 * _tmp3;
-  const Scalar _tmp11 = b1 * _tmp10;
-  const Scalar _tmp12 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp6, _tmp7);
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp14 = _tmp2 * b1;
-  const Scalar _tmp15 = H1 * (_tmp0 * E);
-  const Scalar _tmp16 = b1 * (Ca * _tmp10);
-  const Scalar _tmp17 = _tmp0 * Scalar(2.0);
-  return (((((((((_tmp12 * _tmp15) / _tmp14) + (((_tmp12 * (m * _tmp15)) / _tmp14) + (((_tmp12 * _tmp13) / _tmp14) + ((_tmp9 / _tmp11) + ((_tmp12 * (m * _tmp13)) / _tmp14))))) - (_tmp9 / _tmp16)) - ((_tmp8 * (_tmp4 * _tmp13)) / _tmp16)) - ((_tmp8 * _tmp13) / _tmp16)) - ((_tmp8 * _tmp15) / _tmp16)) - ((_tmp8 * (_tmp4 * _tmp15)) / _tmp11)) - ((_tmp8 * (m * (H1 * (E * (Cx * _tmp17))))) / _tmp16)) - ((_tmp8 * (m * (H1 * (E * _tmp17)))) / _tmp16);
+  const Scalar _tmp3 = m * m;
+  const Scalar _tmp4 = _tmp3 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp5 = _tmp2 * (Scalar(1.0) + m);
+  const Scalar _tmp6 = b1 * _tmp5;
+  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp8 = atoms[0] * _tmp7;
+  const Scalar _tmp9 = _tmp2 * b1;
+  const Scalar _tmp10 = H1 * (_tmp0 * E);
+  const Scalar _tmp11 = atoms[0] * _tmp10;
+  const Scalar _tmp12 = b1 * (Ca * _tmp5);
+  const Scalar _tmp13 = atoms[1] * _tmp7;
+  const Scalar _tmp14 = atoms[1] * _tmp10;
+  const Scalar _tmp15 = _tmp0 * Scalar(2.0);
+  return (((((((((m * _tmp11) / _tmp9) + ((_tmp11 / _tmp9) + (((m * _tmp8) / _tmp9) + ((_tmp4 / _tmp6) + (_tmp8 / _tmp9))))) - (_tmp4 / _tmp12)) - ((_tmp3 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp3 * _tmp14) / _tmp6)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
 }
 
-// The own piece's moment in I'_{j,l} (for waviness_pressure_beyond_half_top_own_argument < 0).
-// Total ops: 90 (18 add, 49 mul, 17 div, 1 sqrt, 3 neg, 2 moment calls), 22 temporaries
+// The atoms of waviness_pressure_beyond_half_top_own_edge, of the zone.
+// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_own_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_own_edge_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+}
+inline constexpr int waviness_pressure_beyond_half_top_own_edge_atoms_outputs = 2;
+
+// Part of the pressure: the own piece's moment in I'_{j,l} (for own_argument < 0), from waviness_pressure_beyond_half_top_own_edge_atoms.
+// Total ops: 80 (16 add, 47 mul, 15 div, 1 sqrt, 1 neg), 16 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_own_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = Scalar(1.0) + m;
-  const Scalar _tmp3 = Ca * _tmp2;
-  const Scalar _tmp4 = -((Scalar(1.0) + (Ca * m)) / _tmp3);
-  const Scalar _tmp5 = -((Scalar(1.0) - Ca) / _tmp3);
-  const Scalar _tmp6 = wavecontact::edge_moment<Scalar>(1, 2, _tmp4, _tmp5);
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = H1 * (E * (_tmp0 * (Cx * Cx)));
-  const Scalar _tmp9 = _tmp7 * (_tmp6 * _tmp8);
-  const Scalar _tmp10 = (_tmp1 * _tmp1) * _tmp2;
-  const Scalar _tmp11 = b1 * (Ca * _tmp10);
-  const Scalar _tmp12 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp13 = _tmp6 * _tmp12;
-  const Scalar _tmp14 = H1 * (_tmp0 * E);
-  const Scalar _tmp15 = _tmp6 * _tmp14;
-  const Scalar _tmp16 = b1 * _tmp10;
-  const Scalar _tmp17 = wavecontact::edge_moment<Scalar>(0, 2, _tmp4, _tmp5);
-  const Scalar _tmp18 = _tmp17 * (_tmp12 * Sa);
-  const Scalar _tmp19 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp20 = H1 * (E * (Cx * _tmp19));
-  const Scalar _tmp21 = H1 * (E * _tmp19);
-  return (((((((((m * (_tmp6 * _tmp21)) / _tmp11) + (((m * (_tmp6 * _tmp20)) / _tmp11) + (((_tmp7 * _tmp15) / _tmp16) + ((_tmp15 / _tmp11) + ((_tmp13 / _tmp11) + ((_tmp9 / _tmp11) + ((_tmp7 * _tmp13) / _tmp11))))))) - ((_tmp7 * (_tmp17 * (_tmp8 * Sa))) / _tmp11)) - ((_tmp7 * _tmp18) / _tmp11)) - (_tmp18 / _tmp11)) - ((_tmp17 * (_tmp14 * Sa)) / _tmp11)) - (_tmp9 / _tmp16)) - ((m * (_tmp17 * (Sa * _tmp20))) / _tmp11)) - ((m * (_tmp17 * (Sa * _tmp21))) / _tmp11);
+  const Scalar _tmp2 = m * m;
+  const Scalar _tmp3 = H1 * (E * (_tmp0 * (Cx * Cx)));
+  const Scalar _tmp4 = _tmp2 * (atoms[1] * _tmp3);
+  const Scalar _tmp5 = (_tmp1 * _tmp1) * (Scalar(1.0) + m);
+  const Scalar _tmp6 = b1 * (Ca * _tmp5);
+  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp8 = atoms[1] * _tmp7;
+  const Scalar _tmp9 = H1 * (_tmp0 * E);
+  const Scalar _tmp10 = atoms[1] * _tmp9;
+  const Scalar _tmp11 = b1 * _tmp5;
+  const Scalar _tmp12 = atoms[0] * (_tmp7 * Sa);
+  const Scalar _tmp13 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp14 = H1 * (E * (Cx * _tmp13));
+  const Scalar _tmp15 = H1 * (E * _tmp13);
+  return (((((((((m * (atoms[1] * _tmp15)) / _tmp6) + (((m * (atoms[1] * _tmp14)) / _tmp6) + (((_tmp2 * _tmp10) / _tmp11) + ((_tmp10 / _tmp6) + ((_tmp8 / _tmp6) + ((_tmp4 / _tmp6) + ((_tmp2 * _tmp8) / _tmp6))))))) - ((_tmp2 * (atoms[0] * (_tmp3 * Sa))) / _tmp6)) - ((_tmp2 * _tmp12) / _tmp6)) - (_tmp12 / _tmp6)) - ((atoms[0] * (_tmp9 * Sa)) / _tmp6)) - (_tmp4 / _tmp11)) - ((m * (atoms[0] * (Sa * _tmp14))) / _tmp6)) - ((m * (atoms[0] * (Sa * _tmp15))) / _tmp6);
 }
 
-// The other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near
-// the other branch's pole, where _other + _jump cancel.
-// Total ops: 318 (59 add, 193 mul, 60 div, 1 sqrt, 2 neg, 3 moment calls), 46 temporaries
+// The atoms of waviness_pressure_beyond_half_top_other_cauchy, at the point's Cauchy argument y.
+// Total ops: 27 (9 add, 6 mul, 6 div, 0 sqrt, 3 neg, 3 moment calls), 3 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_other_cauchy(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_other_cauchy_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
+  out[0] = wavecontact::two_factor_moment<Scalar>(0, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
+  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
+  out[1] = wavecontact::two_factor_moment<Scalar>(1, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+  const Scalar _tmp2 = Scalar(1.0) - (Ca * m);
+  out[2] = wavecontact::two_factor_moment<Scalar>(2, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp2), (Scalar(1.0) - Ca) / _tmp2);
+}
+inline constexpr int waviness_pressure_beyond_half_top_other_cauchy_atoms_outputs = 3;
+
+// Part of the pressure: the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the
+// other branch's pole, where _other + _jump cancel, from waviness_pressure_beyond_half_top_other_cauchy_atoms.
+// Total ops: 294 (57 add, 179 mul, 56 div, 1 sqrt, 1 neg), 42 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_other_cauchy(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
@@ -273,149 +314,176 @@ inline Scalar waviness_pressure_beyond_half_top_other_cauchy(const Scalar& E, co
   const Scalar _tmp3 = Ca * Ca;
   const Scalar _tmp4 = Cx * Cx;
   const Scalar _tmp5 = m * m;
-  const Scalar _tmp6 = (Ca * Sx) / D;
-  const Scalar _tmp7 = (Cx * Sa) / D;
-  const Scalar _tmp8 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp9 = (Scalar(1.0) - Ca) / _tmp1;
-  const Scalar _tmp10 = wavecontact::two_factor_moment<Scalar>(0, 2, _tmp6, _tmp7, _tmp8, _tmp9);
-  const Scalar _tmp11 = _tmp0 * _tmp3;
-  const Scalar _tmp12 = H1 * (E * (_tmp4 * _tmp11));
-  const Scalar _tmp13 = b1 * (D * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2)));
-  const Scalar _tmp14 = m * _tmp5;
-  const Scalar _tmp15 = _tmp12 * _tmp14;
-  const Scalar _tmp16 = Cx * _tmp4;
-  const Scalar _tmp17 = wavecontact::two_factor_moment<Scalar>(1, 2, _tmp6, _tmp7, _tmp8, _tmp9);
-  const Scalar _tmp18 = H1 * (E * (_tmp11 * _tmp16));
-  const Scalar _tmp19 = wavecontact::two_factor_moment<Scalar>(2, 2, _tmp6, _tmp7, _tmp8, _tmp9);
-  const Scalar _tmp20 = H1 * (E * (Cx * _tmp11));
-  const Scalar _tmp21 = Sx * _tmp20;
-  const Scalar _tmp22 = H1 * (E * _tmp11);
-  const Scalar _tmp23 = Sx * _tmp22;
-  const Scalar _tmp24 = H1 * (E * (_tmp0 * _tmp4));
-  const Scalar _tmp25 = H1 * (E * (_tmp0 * _tmp16));
-  const Scalar _tmp26 = Ca * _tmp0;
-  const Scalar _tmp27 = H1 * (E * _tmp26);
-  const Scalar _tmp28 = m * _tmp27;
-  const Scalar _tmp29 = H1 * (E * (_tmp4 * _tmp26));
-  const Scalar _tmp30 = _tmp14 * _tmp29;
-  const Scalar _tmp31 = H1 * (E * (_tmp16 * _tmp26));
-  const Scalar _tmp32 = _tmp5 * _tmp31;
-  const Scalar _tmp33 = _tmp14 * _tmp31;
-  const Scalar _tmp34 = H1 * (E * (Cx * _tmp26));
-  const Scalar _tmp35 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp36 = Ca * _tmp35;
-  const Scalar _tmp37 = H1 * (E * (_tmp4 * _tmp36));
-  const Scalar _tmp38 = _tmp5 * (H1 * (E * (Cx * _tmp36)));
-  const Scalar _tmp39 = _tmp5 * (H1 * (E * _tmp36));
-  const Scalar _tmp40 = _tmp0 * Scalar(3.0);
-  const Scalar _tmp41 = m * (H1 * (E * (Cx * (Ca * _tmp40))));
-  const Scalar _tmp42 = _tmp0 * Scalar(4.0);
-  const Scalar _tmp43 = _tmp3 * _tmp35;
-  const Scalar _tmp44 = _tmp3 * _tmp40;
-  const Scalar _tmp45 = H1 * (E * (_tmp4 * _tmp40));
-  return ((((((((((((((((((((((((((((((_tmp17 * (m * (H1 * (E * (_tmp4 * (_tmp3 * _tmp42)))))) / _tmp13) + (((_tmp10 * (m * (H1 * (E * (Cx * _tmp40))))) / _tmp13) + (((_tmp10 * (m * _tmp45)) / _tmp13) + (((_tmp10 * (_tmp5 * _tmp45)) / _tmp13) + (((_tmp17 * (m * (H1 * (E * (Cx * _tmp44))))) / _tmp13) + (((_tmp17 * (_tmp5 * (H1 * (E * (_tmp4 * _tmp44))))) / _tmp13) + (((_tmp10 * (_tmp5 * (H1 * (E * (Cx * _tmp35))))) / _tmp13) + (((_tmp10 * _tmp39) / _tmp13) + (((_tmp17 * (_tmp14 * (H1 * (E * _tmp43)))) / _tmp13) + (((_tmp17 * (_tmp5 * (H1 * (E * (Cx * _tmp43))))) / _tmp13) + (((_tmp10 * (H1 * (E * (Cx * _tmp0)))) / _tmp13) + (((_tmp17 * _tmp27) / _tmp13) + (((_tmp10 * _tmp28) / _tmp13) + (((_tmp10 * (_tmp14 * _tmp25)) / _tmp13) + (((_tmp10 * (_tmp5 * _tmp25)) / _tmp13) + (((_tmp10 * _tmp24) / _tmp13) + (((_tmp10 * (_tmp14 * _tmp24)) / _tmp13) + (((_tmp17 * _tmp22) / _tmp13) + (((_tmp19 * (m * _tmp23)) / _tmp13) + (((_tmp17 * _tmp20) / _tmp13) + (((_tmp19 * (m * _tmp21)) / _tmp13) + (((_tmp19 * (_tmp5 * _tmp23)) / _tmp13) + (((_tmp19 * (_tmp5 * _tmp21)) / _tmp13) + (((_tmp17 * (_tmp14 * _tmp18)) / _tmp13) + (((_tmp17 * (_tmp5 * _tmp18)) / _tmp13) + (((_tmp10 * (_tmp5 * _tmp12)) / _tmp13) + ((_tmp10 * _tmp15) / _tmp13))))))))))))))))))))))))))) - ((_tmp15 * _tmp17) / _tmp13)) - ((_tmp10 * (_tmp5 * _tmp22)) / _tmp13)) - ((_tmp19 * (_tmp14 * _tmp21)) / _tmp13)) - ((_tmp19 * (_tmp14 * _tmp23)) / _tmp13)) - ((_tmp10 * (_tmp14 * _tmp22)) / _tmp13)) - ((_tmp19 * _tmp21) / _tmp13)) - ((_tmp19 * _tmp23) / _tmp13)) - ((_tmp17 * (m * _tmp22)) / _tmp13)) - ((_tmp17 * (_tmp5 * _tmp29)) / _tmp13)) - ((_tmp10 * _tmp30) / _tmp13)) - ((_tmp17 * _tmp30) / _tmp13)) - ((_tmp10 * _tmp32) / _tmp13)) - ((_tmp17 * _tmp32) / _tmp13)) - ((_tmp10 * _tmp33) / _tmp13)) - ((_tmp17 * _tmp33) / _tmp13)) - ((_tmp10 * _tmp34) / _tmp13)) - ((_tmp17 * _tmp34) / _tmp13)) - ((_tmp17 * _tmp28) / _tmp13)) - ((_tmp10 * _tmp27) / _tmp13)) - ((_tmp17 * (m * _tmp37)) / _tmp13)) - ((_tmp17 * _tmp37) / _tmp13)) - ((_tmp10 * _tmp38) / _tmp13)) - ((_tmp17 * _tmp38) / _tmp13)) - ((_tmp17 * _tmp39) / _tmp13)) - ((_tmp10 * _tmp41) / _tmp13)) - ((_tmp17 * _tmp41) / _tmp13)) - ((_tmp10 * (m * (H1 * (E * (_tmp4 * (Ca * _tmp42)))))) / _tmp13)) - ((_tmp10 * (_tmp5 * (H1 * (E * (_tmp4 * (Ca * (_tmp0 * Scalar(5.0)))))))) / _tmp13);
+  const Scalar _tmp6 = _tmp0 * _tmp3;
+  const Scalar _tmp7 = H1 * (E * (_tmp4 * _tmp6));
+  const Scalar _tmp8 = atoms[0] * _tmp7;
+  const Scalar _tmp9 = b1 * (D * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2)));
+  const Scalar _tmp10 = m * _tmp5;
+  const Scalar _tmp11 = Cx * _tmp4;
+  const Scalar _tmp12 = atoms[1] * (H1 * (E * (_tmp6 * _tmp11)));
+  const Scalar _tmp13 = H1 * (E * (Cx * _tmp6));
+  const Scalar _tmp14 = atoms[2] * (Sx * _tmp13);
+  const Scalar _tmp15 = H1 * (E * _tmp6);
+  const Scalar _tmp16 = atoms[2] * (Sx * _tmp15);
+  const Scalar _tmp17 = atoms[1] * _tmp15;
+  const Scalar _tmp18 = atoms[0] * (H1 * (E * (_tmp0 * _tmp4)));
+  const Scalar _tmp19 = atoms[0] * (H1 * (E * (_tmp0 * _tmp11)));
+  const Scalar _tmp20 = Ca * _tmp0;
+  const Scalar _tmp21 = H1 * (E * _tmp20);
+  const Scalar _tmp22 = atoms[0] * _tmp21;
+  const Scalar _tmp23 = atoms[1] * _tmp21;
+  const Scalar _tmp24 = atoms[0] * _tmp15;
+  const Scalar _tmp25 = H1 * (E * (_tmp4 * _tmp20));
+  const Scalar _tmp26 = atoms[1] * _tmp25;
+  const Scalar _tmp27 = H1 * (E * (_tmp11 * _tmp20));
+  const Scalar _tmp28 = atoms[0] * _tmp27;
+  const Scalar _tmp29 = atoms[1] * _tmp27;
+  const Scalar _tmp30 = H1 * (E * (Cx * _tmp20));
+  const Scalar _tmp31 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp32 = Ca * _tmp31;
+  const Scalar _tmp33 = atoms[1] * (H1 * (E * (_tmp4 * _tmp32)));
+  const Scalar _tmp34 = H1 * (E * (Cx * _tmp32));
+  const Scalar _tmp35 = H1 * (E * _tmp32);
+  const Scalar _tmp36 = _tmp0 * Scalar(3.0);
+  const Scalar _tmp37 = H1 * (E * (Cx * (Ca * _tmp36)));
+  const Scalar _tmp38 = _tmp0 * Scalar(4.0);
+  const Scalar _tmp39 = _tmp3 * _tmp31;
+  const Scalar _tmp40 = _tmp3 * _tmp36;
+  const Scalar _tmp41 = atoms[0] * (H1 * (E * (_tmp4 * _tmp36)));
+  return ((((((((((((((((((((((((((((((m * (atoms[1] * (H1 * (E * (_tmp4 * (_tmp3 * _tmp38)))))) / _tmp9) + (((m * (atoms[0] * (H1 * (E * (Cx * _tmp36))))) / _tmp9) + (((m * _tmp41) / _tmp9) + (((_tmp5 * _tmp41) / _tmp9) + (((m * (atoms[1] * (H1 * (E * (Cx * _tmp40))))) / _tmp9) + (((_tmp5 * (atoms[1] * (H1 * (E * (_tmp4 * _tmp40))))) / _tmp9) + (((_tmp5 * (atoms[0] * (H1 * (E * (Cx * _tmp31))))) / _tmp9) + (((_tmp5 * (atoms[0] * _tmp35)) / _tmp9) + (((_tmp10 * (atoms[1] * (H1 * (E * _tmp39)))) / _tmp9) + (((_tmp5 * (atoms[1] * (H1 * (E * (Cx * _tmp39))))) / _tmp9) + (((atoms[0] * (H1 * (E * (Cx * _tmp0)))) / _tmp9) + ((_tmp23 / _tmp9) + (((m * _tmp22) / _tmp9) + (((_tmp10 * _tmp19) / _tmp9) + (((_tmp5 * _tmp19) / _tmp9) + ((_tmp18 / _tmp9) + (((_tmp10 * _tmp18) / _tmp9) + ((_tmp17 / _tmp9) + (((m * _tmp16) / _tmp9) + (((atoms[1] * _tmp13) / _tmp9) + (((m * _tmp14) / _tmp9) + (((_tmp5 * _tmp16) / _tmp9) + (((_tmp5 * _tmp14) / _tmp9) + (((_tmp10 * _tmp12) / _tmp9) + (((_tmp5 * _tmp12) / _tmp9) + (((_tmp5 * _tmp8) / _tmp9) + ((_tmp8 * _tmp10) / _tmp9))))))))))))))))))))))))))) - ((_tmp10 * (_tmp7 * atoms[1])) / _tmp9)) - ((_tmp5 * _tmp24) / _tmp9)) - ((_tmp10 * _tmp14) / _tmp9)) - ((_tmp10 * _tmp16) / _tmp9)) - ((_tmp10 * _tmp24) / _tmp9)) - (_tmp14 / _tmp9)) - (_tmp16 / _tmp9)) - ((m * _tmp17) / _tmp9)) - ((_tmp5 * _tmp26) / _tmp9)) - ((_tmp10 * (atoms[0] * _tmp25)) / _tmp9)) - ((_tmp10 * _tmp26) / _tmp9)) - ((_tmp5 * _tmp28) / _tmp9)) - ((_tmp5 * _tmp29) / _tmp9)) - ((_tmp10 * _tmp28) / _tmp9)) - ((_tmp10 * _tmp29) / _tmp9)) - ((atoms[0] * _tmp30) / _tmp9)) - ((atoms[1] * _tmp30) / _tmp9)) - (_tmp22 / _tmp9)) - ((m * _tmp23) / _tmp9)) - (_tmp33 / _tmp9)) - ((m * _tmp33) / _tmp9)) - ((_tmp5 * (atoms[0] * _tmp34)) / _tmp9)) - ((_tmp5 * (atoms[1] * _tmp34)) / _tmp9)) - ((_tmp5 * (atoms[1] * _tmp35)) / _tmp9)) - ((m * (atoms[0] * _tmp37)) / _tmp9)) - ((m * (atoms[1] * _tmp37)) / _tmp9)) - ((m * (atoms[0] * (H1 * (E * (_tmp4 * (Ca * _tmp38)))))) / _tmp9)) - ((_tmp5 * (atoms[0] * (H1 * (E * (_tmp4 * (Ca * (_tmp0 * Scalar(5.0)))))))) / _tmp9);
 }
 
-// The same in J'_{j,l} (for waviness_pressure_beyond_half_top_other_argument < 0).
-// Total ops: 208 (33 add, 135 mul, 34 div, 1 sqrt, 2 neg, 3 moment calls), 30 temporaries
+// The atoms of waviness_pressure_beyond_half_top_other_cauchy_edge, at the point's Cauchy argument y.
+// Total ops: 27 (9 add, 6 mul, 6 div, 0 sqrt, 3 neg, 3 moment calls), 3 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_other_cauchy_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_other_cauchy_edge_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
+  out[0] = wavecontact::two_factor_edge_moment<Scalar>(0, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
+  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
+  out[1] = wavecontact::two_factor_edge_moment<Scalar>(1, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+  const Scalar _tmp2 = Scalar(1.0) - (Ca * m);
+  out[2] = wavecontact::two_factor_edge_moment<Scalar>(2, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp2), (Scalar(1.0) - Ca) / _tmp2);
+}
+inline constexpr int waviness_pressure_beyond_half_top_other_cauchy_edge_atoms_outputs = 3;
+
+// Part of the pressure: the same in J'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_top_other_cauchy_edge_atoms.
+// Total ops: 169 (31 add, 106 mul, 30 div, 1 sqrt, 1 neg), 22 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_other_cauchy_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
   const Scalar _tmp2 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp3 = m * m;
-  const Scalar _tmp4 = (Ca * Sx) / D;
-  const Scalar _tmp5 = (Cx * Sa) / D;
-  const Scalar _tmp6 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp7 = (Scalar(1.0) - Ca) / _tmp1;
-  const Scalar _tmp8 = wavecontact::two_factor_edge_moment<Scalar>(2, 2, _tmp4, _tmp5, _tmp6, _tmp7);
-  const Scalar _tmp9 = _tmp0 * (Ca * Ca);
-  const Scalar _tmp10 = Sx * (H1 * (E * (Cx * _tmp9)));
-  const Scalar _tmp11 = b1 * (D * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2)));
-  const Scalar _tmp12 = Sx * (H1 * (E * _tmp9));
-  const Scalar _tmp13 = Cx * Cx;
-  const Scalar _tmp14 = Sa * Sa;
-  const Scalar _tmp15 = m * _tmp3;
-  const Scalar _tmp16 = wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp4, _tmp5, _tmp6, _tmp7);
-  const Scalar _tmp17 = _tmp14 * (H1 * (E * (_tmp0 * _tmp13)));
-  const Scalar _tmp18 = wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp4, _tmp5, _tmp6, _tmp7);
-  const Scalar _tmp19 = Ca * _tmp0;
-  const Scalar _tmp20 = Sa * (H1 * (E * (_tmp13 * _tmp19)));
-  const Scalar _tmp21 = Cx * _tmp13;
-  const Scalar _tmp22 = _tmp14 * (H1 * (E * (_tmp0 * _tmp21)));
-  const Scalar _tmp23 = Sa * (H1 * (E * (_tmp19 * _tmp21)));
-  const Scalar _tmp24 = Sa * (H1 * (E * _tmp19));
-  const Scalar _tmp25 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp26 = Ca * _tmp25;
-  const Scalar _tmp27 = Sa * (H1 * (E * (_tmp13 * _tmp26)));
-  const Scalar _tmp28 = _tmp0 * Scalar(3.0);
-  const Scalar _tmp29 = _tmp14 * (H1 * (E * (_tmp13 * _tmp28)));
-  return (((((((_tmp18 * (m * (Sa * (H1 * (E * (Cx * (Ca * _tmp28))))))) / _tmp11) + (((_tmp16 * (m * (_tmp14 * (H1 * (E * (Cx * _tmp28)))))) / _tmp11) + (((_tmp16 * (m * _tmp29)) / _tmp11) + (((_tmp16 * (_tmp3 * _tmp29)) / _tmp11) + (((_tmp18 * (_tmp3 * (Sa * (H1 * (E * _tmp26))))) / _tmp11) + (((_tmp18 * (_tmp3 * (Sa * (H1 * (E * (Cx * _tmp26)))))) / _tmp11) + (((_tmp16 * (_tmp3 * (_tmp14 * (H1 * (E * (Cx * _tmp25)))))) / _tmp11) + (((_tmp18 * _tmp27) / _tmp11) + (((_tmp18 * (m * _tmp27)) / _tmp11) + (((_tmp18 * (m * _tmp24)) / _tmp11) + (((_tmp18 * (Sa * (H1 * (E * (Cx * _tmp19))))) / _tmp11) + (((_tmp16 * (_tmp14 * (H1 * (E * (Cx * _tmp0))))) / _tmp11) + (((_tmp18 * (_tmp15 * _tmp23)) / _tmp11) + (((_tmp18 * (_tmp3 * _tmp23)) / _tmp11) + (((_tmp16 * (_tmp15 * _tmp22)) / _tmp11) + (((_tmp16 * (_tmp3 * _tmp22)) / _tmp11) + (((_tmp18 * (_tmp15 * _tmp20)) / _tmp11) + (((_tmp18 * (_tmp3 * _tmp20)) / _tmp11) + (((_tmp16 * _tmp17) / _tmp11) + (((_tmp16 * (_tmp15 * _tmp17)) / _tmp11) + (((_tmp8 * (m * _tmp12)) / _tmp11) + (((_tmp8 * (m * _tmp10)) / _tmp11) + (((_tmp8 * (_tmp3 * _tmp10)) / _tmp11) + ((_tmp8 * (_tmp3 * _tmp12)) / _tmp11)))))))))))))))))))))))) - ((_tmp8 * (_tmp10 * _tmp15)) / _tmp11)) - ((_tmp8 * (_tmp12 * _tmp15)) / _tmp11)) - ((_tmp8 * _tmp10) / _tmp11)) - ((_tmp8 * _tmp12) / _tmp11)) - ((_tmp18 * _tmp24) / _tmp11);
+  const Scalar _tmp3 = Cx * Cx;
+  const Scalar _tmp4 = m * m;
+  const Scalar _tmp5 = m * _tmp4;
+  const Scalar _tmp6 = atoms[0] * (H1 * (E * (_tmp0 * _tmp3)));
+  const Scalar _tmp7 = b1 * (D * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2)));
+  const Scalar _tmp8 = Cx * _tmp3;
+  const Scalar _tmp9 = atoms[0] * (H1 * (E * (_tmp0 * _tmp8)));
+  const Scalar _tmp10 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp11 = _tmp0 * Scalar(3.0);
+  const Scalar _tmp12 = atoms[0] * (H1 * (E * (_tmp3 * _tmp11)));
+  const Scalar _tmp13 = Ca * _tmp0;
+  const Scalar _tmp14 = atoms[1] * (H1 * (E * (_tmp3 * _tmp13)));
+  const Scalar _tmp15 = atoms[1] * (H1 * (E * (_tmp8 * _tmp13)));
+  const Scalar _tmp16 = atoms[1] * (H1 * (E * _tmp13));
+  const Scalar _tmp17 = Ca * _tmp10;
+  const Scalar _tmp18 = atoms[1] * (H1 * (E * (_tmp3 * _tmp17)));
+  const Scalar _tmp19 = _tmp0 * (Ca * Ca);
+  const Scalar _tmp20 = atoms[2] * (Sx * (H1 * (E * (Cx * _tmp19))));
+  const Scalar _tmp21 = atoms[2] * (Sx * (H1 * (E * _tmp19)));
+  return (Sa * (((((m * (atoms[0] * (H1 * (E * (Cx * _tmp11))))) / _tmp7) + (((m * _tmp12) / _tmp7) + (((_tmp4 * _tmp12) / _tmp7) + (((_tmp4 * (atoms[0] * (H1 * (E * (Cx * _tmp10))))) / _tmp7) + (((atoms[0] * (H1 * (E * (Cx * _tmp0)))) / _tmp7) + (((_tmp5 * _tmp9) / _tmp7) + (((_tmp4 * _tmp9) / _tmp7) + (((_tmp5 * _tmp6) / _tmp7) + (_tmp6 / _tmp7))))))))) * Sa) + ((((m * (atoms[1] * (H1 * (E * (Cx * (Ca * _tmp11)))))) / _tmp7) + (((_tmp4 * (atoms[1] * (H1 * (E * _tmp17)))) / _tmp7) + (((_tmp4 * (atoms[1] * (H1 * (E * (Cx * _tmp17))))) / _tmp7) + (((m * _tmp18) / _tmp7) + ((_tmp18 / _tmp7) + (((m * _tmp16) / _tmp7) + (((atoms[1] * (H1 * (E * (Cx * _tmp13)))) / _tmp7) + (((_tmp5 * _tmp15) / _tmp7) + (((_tmp4 * _tmp15) / _tmp7) + (((_tmp4 * _tmp14) / _tmp7) + ((_tmp5 * _tmp14) / _tmp7))))))))))) - (_tmp16 / _tmp7)))) + (((((((m * _tmp21) / _tmp7) + (((m * _tmp20) / _tmp7) + (((_tmp4 * _tmp20) / _tmp7) + ((_tmp4 * _tmp21) / _tmp7)))) - ((_tmp5 * _tmp20) / _tmp7)) - ((_tmp5 * _tmp21) / _tmp7)) - (_tmp20 / _tmp7)) - (_tmp21 / _tmp7));
 }
 
-// The other piece's moment with the other branch's value at x apart (I_{j,l}).
-// Total ops: 121 (25 add, 67 mul, 24 div, 1 sqrt, 2 neg, 2 moment calls), 20 temporaries
+// The atoms of waviness_pressure_beyond_half_top_other, of the zone.
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_other(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_other_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
+  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+}
+inline constexpr int waviness_pressure_beyond_half_top_other_atoms_outputs = 2;
+
+// Part of the pressure: the other piece's moment with the other branch's value at x apart (I_{j,l}), from waviness_pressure_beyond_half_top_other_atoms.
+// Total ops: 102 (23 add, 55 mul, 22 div, 1 sqrt, 1 neg), 16 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_other(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
   const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
   const Scalar _tmp3 = Cx * Cx;
   const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp6 = (Scalar(1.0) - Ca) / _tmp1;
-  const Scalar _tmp7 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp5, _tmp6);
-  const Scalar _tmp8 = H1 * (E * (_tmp0 * _tmp3));
-  const Scalar _tmp9 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp10 = m * _tmp4;
-  const Scalar _tmp11 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp5, _tmp6);
-  const Scalar _tmp12 = Ca * _tmp0;
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp12));
-  const Scalar _tmp14 = H1 * (E * _tmp12);
-  const Scalar _tmp15 = _tmp4 * _tmp14;
-  const Scalar _tmp16 = _tmp10 * _tmp14;
-  const Scalar _tmp17 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp18 = H1 * (_tmp0 * E);
-  const Scalar _tmp19 = H1 * (E * (_tmp3 * _tmp12));
-  return ((((((((((((_tmp7 * _tmp18) / _tmp9) + (((_tmp7 * _tmp17) / _tmp9) + (((_tmp11 * (m * _tmp14)) / _tmp9) + (((_tmp11 * (m * _tmp13)) / _tmp9) + (((_tmp7 * (_tmp10 * _tmp17)) / _tmp9) + (((_tmp7 * _tmp16) / _tmp9) + (((_tmp11 * _tmp15) / _tmp9) + (((_tmp7 * _tmp15) / _tmp9) + (((_tmp11 * (_tmp4 * _tmp13)) / _tmp9) + (((_tmp7 * (_tmp4 * _tmp8)) / _tmp9) + ((_tmp7 * (_tmp8 * _tmp10)) / _tmp9))))))))))) - ((_tmp7 * (_tmp4 * _tmp19)) / _tmp9)) - ((_tmp7 * (_tmp10 * _tmp19)) / _tmp9)) - ((_tmp7 * (_tmp4 * _tmp17)) / _tmp9)) - ((_tmp11 * (_tmp10 * _tmp13)) / _tmp9)) - ((_tmp11 * _tmp16) / _tmp9)) - ((_tmp11 * _tmp13) / _tmp9)) - ((_tmp11 * _tmp14) / _tmp9)) - ((_tmp7 * (m * _tmp17)) / _tmp9)) - ((_tmp7 * (m * _tmp18)) / _tmp9)) - ((_tmp7 * (_tmp4 * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp9);
+  const Scalar _tmp5 = atoms[0] * (H1 * (E * (_tmp0 * _tmp3)));
+  const Scalar _tmp6 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
+  const Scalar _tmp7 = m * _tmp4;
+  const Scalar _tmp8 = Ca * _tmp0;
+  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp8)));
+  const Scalar _tmp10 = H1 * (E * _tmp8);
+  const Scalar _tmp11 = atoms[0] * _tmp10;
+  const Scalar _tmp12 = atoms[1] * _tmp10;
+  const Scalar _tmp13 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
+  const Scalar _tmp14 = atoms[0] * (H1 * (_tmp0 * E));
+  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp3 * _tmp8)));
+  return (((((((((((_tmp14 / _tmp6) + ((_tmp13 / _tmp6) + (((m * _tmp12) / _tmp6) + (((m * _tmp9) / _tmp6) + (((_tmp7 * _tmp13) / _tmp6) + (((_tmp7 * _tmp11) / _tmp6) + (((_tmp4 * _tmp12) / _tmp6) + (((_tmp4 * _tmp11) / _tmp6) + (((_tmp4 * _tmp9) / _tmp6) + (((_tmp4 * _tmp5) / _tmp6) + ((_tmp5 * _tmp7) / _tmp6))))))))))) - ((_tmp4 * _tmp15) / _tmp6)) - ((_tmp7 * _tmp15) / _tmp6)) - ((_tmp4 * _tmp13) / _tmp6)) - ((_tmp7 * _tmp9) / _tmp6)) - ((_tmp7 * _tmp12) / _tmp6)) - (_tmp9 / _tmp6)) - (_tmp12 / _tmp6)) - ((m * _tmp13) / _tmp6)) - ((m * _tmp14) / _tmp6)) - ((_tmp4 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp6);
 }
 
-// The same in I'_{j,l} (for waviness_pressure_beyond_half_top_other_argument < 0).
-// Total ops: 97 (21 add, 51 mul, 20 div, 1 sqrt, 2 neg, 2 moment calls), 16 temporaries
+// The atoms of waviness_pressure_beyond_half_top_other_edge, of the zone.
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_other_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_other_edge_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
+  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+}
+inline constexpr int waviness_pressure_beyond_half_top_other_edge_atoms_outputs = 2;
+
+// Part of the pressure: the same in I'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_top_other_edge_atoms.
+// Total ops: 89 (19 add, 50 mul, 18 div, 1 sqrt, 1 neg), 12 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_other_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
   const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp3 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp4 = (Scalar(1.0) - Ca) / _tmp1;
-  const Scalar _tmp5 = wavecontact::edge_moment<Scalar>(0, 2, _tmp3, _tmp4);
-  const Scalar _tmp6 = m * m;
-  const Scalar _tmp7 = _tmp5 * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp8 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp9 = m * _tmp6;
-  const Scalar _tmp10 = wavecontact::edge_moment<Scalar>(1, 2, _tmp3, _tmp4);
-  const Scalar _tmp11 = Ca * _tmp0;
-  const Scalar _tmp12 = _tmp10 * (H1 * (E * (Cx * _tmp11)));
-  const Scalar _tmp13 = _tmp10 * (H1 * (E * _tmp11));
-  const Scalar _tmp14 = _tmp5 * (Sa * (H1 * (E * (Cx * _tmp0))));
-  const Scalar _tmp15 = _tmp5 * (Sa * (H1 * (_tmp0 * E)));
-  return (((((((((_tmp15 / _tmp8) + ((_tmp14 / _tmp8) + ((_tmp13 / _tmp8) + ((_tmp12 / _tmp8) + (((_tmp9 * _tmp14) / _tmp8) + (((_tmp9 * _tmp13) / _tmp8) + (((_tmp9 * _tmp12) / _tmp8) + (((_tmp6 * _tmp7) / _tmp8) + ((_tmp7 * _tmp9) / _tmp8))))))))) - ((_tmp6 * _tmp12) / _tmp8)) - ((_tmp6 * _tmp13) / _tmp8)) - ((_tmp6 * _tmp14) / _tmp8)) - ((m * _tmp12) / _tmp8)) - ((m * _tmp13) / _tmp8)) - ((m * _tmp14) / _tmp8)) - ((m * _tmp15) / _tmp8)) - ((_tmp6 * (_tmp5 * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp8);
+  const Scalar _tmp3 = m * m;
+  const Scalar _tmp4 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp5 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
+  const Scalar _tmp6 = m * _tmp3;
+  const Scalar _tmp7 = Ca * _tmp0;
+  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp7)));
+  const Scalar _tmp9 = atoms[1] * (H1 * (E * _tmp7));
+  const Scalar _tmp10 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
+  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
+  return (((((((((_tmp11 / _tmp5) + ((_tmp10 / _tmp5) + ((_tmp9 / _tmp5) + ((_tmp8 / _tmp5) + (((_tmp6 * _tmp10) / _tmp5) + (((_tmp6 * _tmp9) / _tmp5) + (((_tmp6 * _tmp8) / _tmp5) + (((_tmp3 * _tmp4) / _tmp5) + ((_tmp4 * _tmp6) / _tmp5))))))))) - ((_tmp3 * _tmp8) / _tmp5)) - ((_tmp3 * _tmp9) / _tmp5)) - ((_tmp3 * _tmp10) / _tmp5)) - ((m * _tmp8) / _tmp5)) - ((m * _tmp9) / _tmp5)) - ((m * _tmp10) / _tmp5)) - ((m * _tmp11) / _tmp5)) - ((_tmp3 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp5);
 }
 
-// The jump of the branches at x times the other piece's Cauchy moment.
-// Total ops: 29 (4 add, 18 mul, 4 div, 1 sqrt, 1 neg, 1 moment calls), 4 temporaries
+// The atoms of waviness_pressure_beyond_half_top_jump, at the point's Cauchy argument y.
+// Total ops: 1 (0 add, 0 mul, 0 div, 0 sqrt, 0 neg, 1 moment calls), 0 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_top_jump(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
+inline void waviness_pressure_beyond_half_top_jump_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& /*m*/, const Scalar& /*Ca*/, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
+  using std::sqrt;
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 1, y, one_plus_y);
+}
+inline constexpr int waviness_pressure_beyond_half_top_jump_atoms_outputs = 1;
+
+// Part of the pressure: the jump of the branches at x times the other piece's Cauchy moment, from waviness_pressure_beyond_half_top_jump_atoms.
+// Total ops: 24 (4 add, 16 mul, 2 div, 1 sqrt, 1 neg), 4 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_top_jump(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = Scalar(1.0) + Cx;
   const Scalar _tmp1 = Cx * m;
   const Scalar _tmp2 = Scalar(1.0) - _tmp1;
   const Scalar _tmp3 = Scalar(1.0) + _tmp1;
-  return (wavecontact::quadratic_moment<Scalar>(0, 1, (Ca * Sx) / D, (Cx * Sa) / D) * (m * (Sx * (H1 * (E * (Cx * ((Scalar(1.0) + m) * (_tmp0 * (sqrt(-((Ca * D) / _tmp0)) * Scalar(4.0)))))))))) / (b1 * (D * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3))));
+  return (m * (atoms[0] * (Sx * (H1 * (E * (Cx * ((Scalar(1.0) + m) * (_tmp0 * (sqrt(-((Ca * D) / _tmp0)) * Scalar(4.0)))))))))) / (b1 * (D * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3))));
 }
 
 // z of the own piece's pole factor: it selects the basis.
@@ -434,222 +502,285 @@ inline Scalar waviness_pressure_beyond_half_top_other_argument(const Scalar& /*E
   return -((Ca * (Scalar(1.0) - m)) / (Scalar(1.0) - (Ca * m)));
 }
 
-// Contact pressure p(x) on the flank (beyond the branch point) of a zone reaching beyond the branch point, eq. 12
-// split there (derive/beyond_branch.hpp), in parts: the own piece's moment (I_{j,l}).
-// Total ops: 121 (25 add, 67 mul, 24 div, 1 sqrt, 2 neg, 2 moment calls), 20 temporaries
+// Contact pressure p(x) on the flank (beyond the branch point) of a zone reaching beyond the branch point: eq. 12
+// split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
+// at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.
+// Total ops: 5 (0 add, 3 mul, 2 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_own(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_flank_cauchy_argument(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& /*m*/, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, Scalar* out) {
+  using std::sqrt;
+  out[0] = D / (Ca * Sx);
+  out[1] = (Cx * Sa) / (Ca * Sx);
+}
+inline constexpr int waviness_pressure_beyond_half_flank_cauchy_argument_outputs = 2;
+
+// The atoms of waviness_pressure_beyond_half_flank_own, of the zone.
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
+template <typename Scalar>
+inline void waviness_pressure_beyond_half_flank_own_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
+  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+}
+inline constexpr int waviness_pressure_beyond_half_flank_own_atoms_outputs = 2;
+
+// Part of the pressure: the own piece's moment (I_{j,l}), from waviness_pressure_beyond_half_flank_own_atoms.
+// Total ops: 102 (23 add, 55 mul, 22 div, 1 sqrt, 1 neg), 16 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_own(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
   const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
   const Scalar _tmp3 = Cx * Cx;
   const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp6 = (Scalar(1.0) - Ca) / _tmp1;
-  const Scalar _tmp7 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp5, _tmp6);
-  const Scalar _tmp8 = H1 * (E * (_tmp0 * _tmp3));
-  const Scalar _tmp9 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp10 = m * _tmp4;
-  const Scalar _tmp11 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp5, _tmp6);
-  const Scalar _tmp12 = Ca * _tmp0;
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp12));
-  const Scalar _tmp14 = H1 * (E * _tmp12);
-  const Scalar _tmp15 = _tmp4 * _tmp14;
-  const Scalar _tmp16 = _tmp10 * _tmp14;
-  const Scalar _tmp17 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp18 = H1 * (_tmp0 * E);
-  const Scalar _tmp19 = H1 * (E * (_tmp3 * _tmp12));
-  return ((((((((((((_tmp7 * _tmp18) / _tmp9) + (((_tmp7 * _tmp17) / _tmp9) + (((_tmp11 * (m * _tmp14)) / _tmp9) + (((_tmp11 * (m * _tmp13)) / _tmp9) + (((_tmp7 * (_tmp10 * _tmp17)) / _tmp9) + (((_tmp7 * _tmp16) / _tmp9) + (((_tmp11 * _tmp15) / _tmp9) + (((_tmp7 * _tmp15) / _tmp9) + (((_tmp11 * (_tmp4 * _tmp13)) / _tmp9) + (((_tmp7 * (_tmp4 * _tmp8)) / _tmp9) + ((_tmp7 * (_tmp8 * _tmp10)) / _tmp9))))))))))) - ((_tmp7 * (_tmp4 * _tmp19)) / _tmp9)) - ((_tmp7 * (_tmp10 * _tmp19)) / _tmp9)) - ((_tmp7 * (_tmp4 * _tmp17)) / _tmp9)) - ((_tmp11 * (_tmp10 * _tmp13)) / _tmp9)) - ((_tmp11 * _tmp16) / _tmp9)) - ((_tmp11 * _tmp13) / _tmp9)) - ((_tmp11 * _tmp14) / _tmp9)) - ((_tmp7 * (m * _tmp17)) / _tmp9)) - ((_tmp7 * (m * _tmp18)) / _tmp9)) - ((_tmp7 * (_tmp4 * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp9);
+  const Scalar _tmp5 = atoms[0] * (H1 * (E * (_tmp0 * _tmp3)));
+  const Scalar _tmp6 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
+  const Scalar _tmp7 = m * _tmp4;
+  const Scalar _tmp8 = Ca * _tmp0;
+  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp8)));
+  const Scalar _tmp10 = H1 * (E * _tmp8);
+  const Scalar _tmp11 = atoms[0] * _tmp10;
+  const Scalar _tmp12 = atoms[1] * _tmp10;
+  const Scalar _tmp13 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
+  const Scalar _tmp14 = atoms[0] * (H1 * (_tmp0 * E));
+  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp3 * _tmp8)));
+  return (((((((((((_tmp14 / _tmp6) + ((_tmp13 / _tmp6) + (((m * _tmp12) / _tmp6) + (((m * _tmp9) / _tmp6) + (((_tmp7 * _tmp13) / _tmp6) + (((_tmp7 * _tmp11) / _tmp6) + (((_tmp4 * _tmp12) / _tmp6) + (((_tmp4 * _tmp11) / _tmp6) + (((_tmp4 * _tmp9) / _tmp6) + (((_tmp4 * _tmp5) / _tmp6) + ((_tmp5 * _tmp7) / _tmp6))))))))))) - ((_tmp4 * _tmp15) / _tmp6)) - ((_tmp7 * _tmp15) / _tmp6)) - ((_tmp4 * _tmp13) / _tmp6)) - ((_tmp7 * _tmp9) / _tmp6)) - ((_tmp7 * _tmp12) / _tmp6)) - (_tmp9 / _tmp6)) - (_tmp12 / _tmp6)) - ((m * _tmp13) / _tmp6)) - ((m * _tmp14) / _tmp6)) - ((_tmp4 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp6);
 }
 
-// The own piece's moment in I'_{j,l} (for waviness_pressure_beyond_half_flank_own_argument < 0).
-// Total ops: 97 (21 add, 51 mul, 20 div, 1 sqrt, 2 neg, 2 moment calls), 16 temporaries
+// The atoms of waviness_pressure_beyond_half_flank_own_edge, of the zone.
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_own_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_flank_own_edge_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
+  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+}
+inline constexpr int waviness_pressure_beyond_half_flank_own_edge_atoms_outputs = 2;
+
+// Part of the pressure: the own piece's moment in I'_{j,l} (for own_argument < 0), from waviness_pressure_beyond_half_flank_own_edge_atoms.
+// Total ops: 89 (19 add, 50 mul, 18 div, 1 sqrt, 1 neg), 12 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_own_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
   const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp3 = -((Ca * (Scalar(1.0) - m)) / _tmp1);
-  const Scalar _tmp4 = (Scalar(1.0) - Ca) / _tmp1;
-  const Scalar _tmp5 = wavecontact::edge_moment<Scalar>(0, 2, _tmp3, _tmp4);
-  const Scalar _tmp6 = m * m;
-  const Scalar _tmp7 = _tmp5 * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp8 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp9 = m * _tmp6;
-  const Scalar _tmp10 = wavecontact::edge_moment<Scalar>(1, 2, _tmp3, _tmp4);
-  const Scalar _tmp11 = Ca * _tmp0;
-  const Scalar _tmp12 = _tmp10 * (H1 * (E * (Cx * _tmp11)));
-  const Scalar _tmp13 = _tmp10 * (H1 * (E * _tmp11));
-  const Scalar _tmp14 = _tmp5 * (Sa * (H1 * (E * (Cx * _tmp0))));
-  const Scalar _tmp15 = _tmp5 * (Sa * (H1 * (_tmp0 * E)));
-  return (((((((((_tmp15 / _tmp8) + ((_tmp14 / _tmp8) + ((_tmp13 / _tmp8) + ((_tmp12 / _tmp8) + (((_tmp9 * _tmp14) / _tmp8) + (((_tmp9 * _tmp13) / _tmp8) + (((_tmp9 * _tmp12) / _tmp8) + (((_tmp6 * _tmp7) / _tmp8) + ((_tmp7 * _tmp9) / _tmp8))))))))) - ((_tmp6 * _tmp12) / _tmp8)) - ((_tmp6 * _tmp13) / _tmp8)) - ((_tmp6 * _tmp14) / _tmp8)) - ((m * _tmp12) / _tmp8)) - ((m * _tmp13) / _tmp8)) - ((m * _tmp14) / _tmp8)) - ((m * _tmp15) / _tmp8)) - ((_tmp6 * (_tmp5 * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp8);
+  const Scalar _tmp3 = m * m;
+  const Scalar _tmp4 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp5 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
+  const Scalar _tmp6 = m * _tmp3;
+  const Scalar _tmp7 = Ca * _tmp0;
+  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp7)));
+  const Scalar _tmp9 = atoms[1] * (H1 * (E * _tmp7));
+  const Scalar _tmp10 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
+  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
+  return (((((((((_tmp11 / _tmp5) + ((_tmp10 / _tmp5) + ((_tmp9 / _tmp5) + ((_tmp8 / _tmp5) + (((_tmp6 * _tmp10) / _tmp5) + (((_tmp6 * _tmp9) / _tmp5) + (((_tmp6 * _tmp8) / _tmp5) + (((_tmp3 * _tmp4) / _tmp5) + ((_tmp4 * _tmp6) / _tmp5))))))))) - ((_tmp3 * _tmp8) / _tmp5)) - ((_tmp3 * _tmp9) / _tmp5)) - ((_tmp3 * _tmp10) / _tmp5)) - ((m * _tmp8) / _tmp5)) - ((m * _tmp9) / _tmp5)) - ((m * _tmp10) / _tmp5)) - ((m * _tmp11) / _tmp5)) - ((_tmp3 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp5);
 }
 
-// The other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near
-// the other branch's pole, where _other + _jump cancel.
-// Total ops: 162 (38 add, 78 mul, 39 div, 1 sqrt, 3 neg, 3 moment calls), 41 temporaries
+// The atoms of waviness_pressure_beyond_half_flank_other_cauchy, at the point's Cauchy argument y.
+// Total ops: 30 (9 add, 6 mul, 6 div, 0 sqrt, 6 neg, 3 moment calls), 3 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_other_cauchy(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
+inline void waviness_pressure_beyond_half_flank_other_cauchy_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
+  out[0] = wavecontact::two_factor_moment<Scalar>(0, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
+  out[1] = wavecontact::two_factor_moment<Scalar>(1, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  const Scalar _tmp2 = (Scalar(1.0) + m) * Ca;
+  out[2] = wavecontact::two_factor_moment<Scalar>(2, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp2), -((Scalar(1.0) - Ca) / _tmp2));
+}
+inline constexpr int waviness_pressure_beyond_half_flank_other_cauchy_atoms_outputs = 3;
+
+// Part of the pressure: the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the
+// other branch's pole, where _other + _jump cancel, from waviness_pressure_beyond_half_flank_other_cauchy_atoms.
+// Total ops: 147 (36 add, 74 mul, 35 div, 1 sqrt, 1 neg), 34 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_other_cauchy(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp1 = Scalar(1.0) - (Cx * m);
   const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = Scalar(1.0) + m;
-  const Scalar _tmp4 = Cx * Cx;
-  const Scalar _tmp5 = m * m;
-  const Scalar _tmp6 = Ca * Sx;
-  const Scalar _tmp7 = D / _tmp6;
-  const Scalar _tmp8 = (Cx * Sa) / _tmp6;
-  const Scalar _tmp9 = Ca * _tmp3;
-  const Scalar _tmp10 = -((Scalar(1.0) + (Ca * m)) / _tmp9);
-  const Scalar _tmp11 = -((Scalar(1.0) - Ca) / _tmp9);
-  const Scalar _tmp12 = wavecontact::two_factor_moment<Scalar>(1, 2, _tmp7, _tmp8, _tmp10, _tmp11);
-  const Scalar _tmp13 = H1 * (E * (_tmp0 * _tmp4));
-  const Scalar _tmp14 = _tmp5 * _tmp13;
-  const Scalar _tmp15 = _tmp12 * _tmp14;
-  const Scalar _tmp16 = _tmp2 * _tmp3;
-  const Scalar _tmp17 = b1 * (Sx * (Ca * _tmp16));
-  const Scalar _tmp18 = wavecontact::two_factor_moment<Scalar>(2, 2, _tmp7, _tmp8, _tmp10, _tmp11);
-  const Scalar _tmp19 = _tmp14 * _tmp18;
-  const Scalar _tmp20 = _tmp5 * (H1 * (E * (_tmp0 * (Cx * _tmp4))));
-  const Scalar _tmp21 = _tmp12 * _tmp20;
-  const Scalar _tmp22 = _tmp18 * _tmp20;
-  const Scalar _tmp23 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp24 = _tmp12 * _tmp23;
-  const Scalar _tmp25 = _tmp18 * _tmp23;
-  const Scalar _tmp26 = H1 * (_tmp0 * E);
-  const Scalar _tmp27 = b1 * (Sx * _tmp16);
-  const Scalar _tmp28 = wavecontact::two_factor_moment<Scalar>(0, 2, _tmp7, _tmp8, _tmp10, _tmp11);
-  const Scalar _tmp29 = _tmp2 * b1;
-  const Scalar _tmp30 = _tmp12 * _tmp26;
-  const Scalar _tmp31 = b1 * (Sx * (_tmp16 * (Ca * Ca)));
-  const Scalar _tmp32 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp33 = m * (H1 * (E * (Cx * _tmp32)));
-  const Scalar _tmp34 = _tmp12 * _tmp33;
-  const Scalar _tmp35 = _tmp18 * _tmp33;
-  const Scalar _tmp36 = H1 * (E * _tmp32);
-  const Scalar _tmp37 = m * _tmp36;
-  const Scalar _tmp38 = _tmp12 * _tmp37;
-  const Scalar _tmp39 = m * (H1 * (E * (_tmp4 * (_tmp0 * Scalar(4.0)))));
-  const Scalar _tmp40 = H1 * (E * (_tmp4 * _tmp32));
-  return (((((((((((((((((_tmp12 * _tmp39) / _tmp27) + ((_tmp34 / _tmp27) + ((_tmp35 / _tmp31) + (((_tmp18 * (m * _tmp40)) / _tmp31) + (((_tmp18 * _tmp37) / _tmp17) + (((_tmp12 * _tmp40) / _tmp17) + (((_tmp26 * _tmp28) / _tmp29) + (((_tmp28 * (m * _tmp26)) / _tmp29) + (((_tmp23 * _tmp28) / _tmp29) + (((_tmp28 * (m * _tmp23)) / _tmp29) + (((_tmp18 * (_tmp5 * _tmp26)) / _tmp27) + ((_tmp15 / _tmp27) + (((_tmp18 * _tmp26) / _tmp17) + ((_tmp25 / _tmp17) + ((_tmp24 / _tmp17) + ((_tmp22 / _tmp17) + ((_tmp21 / _tmp17) + ((_tmp15 / _tmp17) + (_tmp19 / _tmp17))))))))))))))))))) - (_tmp30 / _tmp17)) - (_tmp19 / _tmp31)) - ((_tmp13 * _tmp18) / _tmp31)) - (_tmp22 / _tmp31)) - (_tmp25 / _tmp31)) - (_tmp19 / _tmp27)) - (_tmp21 / _tmp27)) - (_tmp24 / _tmp27)) - (_tmp30 / _tmp27)) - (_tmp34 / _tmp17)) - (_tmp35 / _tmp17)) - (_tmp38 / _tmp17)) - ((_tmp12 * (_tmp5 * _tmp36)) / _tmp27)) - (_tmp38 / _tmp27)) - ((_tmp18 * _tmp39) / _tmp17);
-}
-
-// The same in J'_{j,l} (for waviness_pressure_beyond_half_flank_other_argument < 0).
-// Total ops: 197 (38 add, 113 mul, 39 div, 1 sqrt, 3 neg, 3 moment calls), 38 temporaries
-template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_other_cauchy_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
-  using std::sqrt;
-  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp2 = Scalar(1.0) + m;
   const Scalar _tmp3 = Cx * Cx;
   const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = Ca * Sx;
-  const Scalar _tmp6 = D / _tmp5;
-  const Scalar _tmp7 = (Cx * Sa) / _tmp5;
-  const Scalar _tmp8 = Ca * _tmp2;
-  const Scalar _tmp9 = -((Scalar(1.0) + (Ca * m)) / _tmp8);
-  const Scalar _tmp10 = -((Scalar(1.0) - Ca) / _tmp8);
-  const Scalar _tmp11 = wavecontact::two_factor_edge_moment<Scalar>(2, 2, _tmp6, _tmp7, _tmp9, _tmp10);
-  const Scalar _tmp12 = H1 * (E * (_tmp0 * _tmp3));
-  const Scalar _tmp13 = _tmp11 * (_tmp4 * _tmp12);
-  const Scalar _tmp14 = (_tmp1 * _tmp1) * _tmp2;
-  const Scalar _tmp15 = b1 * (Sx * (Ca * _tmp14));
-  const Scalar _tmp16 = Cx * _tmp3;
-  const Scalar _tmp17 = H1 * (E * (_tmp0 * _tmp16));
-  const Scalar _tmp18 = _tmp11 * (_tmp4 * _tmp17);
-  const Scalar _tmp19 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp20 = _tmp11 * _tmp19;
-  const Scalar _tmp21 = H1 * (_tmp0 * E);
-  const Scalar _tmp22 = b1 * (Sx * _tmp14);
-  const Scalar _tmp23 = wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp6, _tmp7, _tmp9, _tmp10);
-  const Scalar _tmp24 = Sa * Sa;
-  const Scalar _tmp25 = wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp6, _tmp7, _tmp9, _tmp10);
-  const Scalar _tmp26 = _tmp12 * _tmp24;
-  const Scalar _tmp27 = b1 * (Sx * (_tmp14 * (Ca * Ca)));
-  const Scalar _tmp28 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp29 = H1 * (E * (Cx * _tmp28));
-  const Scalar _tmp30 = _tmp11 * (m * _tmp29);
-  const Scalar _tmp31 = H1 * (E * _tmp28);
-  const Scalar _tmp32 = _tmp0 * Scalar(4.0);
-  const Scalar _tmp33 = H1 * (E * (_tmp3 * _tmp32));
-  const Scalar _tmp34 = _tmp23 * (m * (Sa * _tmp33));
-  const Scalar _tmp35 = Sa * _tmp29;
-  const Scalar _tmp36 = H1 * (E * (_tmp3 * _tmp28));
-  const Scalar _tmp37 = Sa * _tmp36;
-  return (((((((((((((((((((_tmp34 / _tmp15) + ((_tmp30 / _tmp27) + (((_tmp23 * _tmp35) / _tmp27) + (((_tmp25 * (m * (_tmp24 * _tmp29))) / _tmp27) + (((_tmp23 * (_tmp4 * (Sa * (H1 * (E * (_tmp16 * _tmp28)))))) / _tmp27) + (((_tmp11 * (m * _tmp36)) / _tmp27) + (((_tmp23 * _tmp37) / _tmp27) + (((_tmp23 * (_tmp4 * _tmp37)) / _tmp27) + (((_tmp25 * (m * (_tmp24 * _tmp36))) / _tmp27) + (((_tmp11 * (m * _tmp31)) / _tmp15) + (((_tmp23 * (m * _tmp35)) / _tmp15) + (((_tmp11 * (_tmp4 * _tmp21)) / _tmp22) + (((_tmp11 * _tmp21) / _tmp15) + ((_tmp20 / _tmp15) + ((_tmp13 / _tmp15) + (_tmp18 / _tmp15)))))))))))))))) - ((_tmp23 * (_tmp4 * (Sa * _tmp12))) / _tmp15)) - ((_tmp23 * (_tmp4 * (Sa * _tmp17))) / _tmp15)) - ((_tmp23 * (Sa * _tmp19)) / _tmp15)) - ((_tmp23 * (Sa * _tmp21)) / _tmp15)) - ((_tmp25 * (_tmp4 * _tmp26)) / _tmp27)) - ((_tmp25 * _tmp26) / _tmp27)) - (_tmp13 / _tmp27)) - ((_tmp11 * _tmp12) / _tmp27)) - ((_tmp25 * (_tmp4 * (_tmp17 * _tmp24))) / _tmp27)) - (_tmp18 / _tmp27)) - ((_tmp25 * (_tmp19 * _tmp24)) / _tmp27)) - (_tmp20 / _tmp27)) - (_tmp13 / _tmp22)) - (_tmp30 / _tmp15)) - ((_tmp23 * (m * (Sa * _tmp31))) / _tmp15)) - ((_tmp11 * (m * _tmp33)) / _tmp15)) - (_tmp34 / _tmp27)) - ((_tmp23 * (m * (Sa * (H1 * (E * (Cx * _tmp32)))))) / _tmp27);
+  const Scalar _tmp5 = H1 * (E * (_tmp0 * _tmp3));
+  const Scalar _tmp6 = _tmp4 * (atoms[1] * _tmp5);
+  const Scalar _tmp7 = _tmp2 * (Scalar(1.0) + m);
+  const Scalar _tmp8 = b1 * (Sx * (Ca * _tmp7));
+  const Scalar _tmp9 = _tmp5 * atoms[2];
+  const Scalar _tmp10 = _tmp4 * _tmp9;
+  const Scalar _tmp11 = H1 * (E * (_tmp0 * (Cx * _tmp3)));
+  const Scalar _tmp12 = _tmp4 * (atoms[1] * _tmp11);
+  const Scalar _tmp13 = _tmp4 * (atoms[2] * _tmp11);
+  const Scalar _tmp14 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp15 = atoms[1] * _tmp14;
+  const Scalar _tmp16 = atoms[2] * _tmp14;
+  const Scalar _tmp17 = H1 * (_tmp0 * E);
+  const Scalar _tmp18 = atoms[2] * _tmp17;
+  const Scalar _tmp19 = b1 * (Sx * _tmp7);
+  const Scalar _tmp20 = _tmp14 * atoms[0];
+  const Scalar _tmp21 = _tmp2 * b1;
+  const Scalar _tmp22 = _tmp17 * atoms[0];
+  const Scalar _tmp23 = atoms[1] * _tmp17;
+  const Scalar _tmp24 = b1 * (Sx * (_tmp7 * (Ca * Ca)));
+  const Scalar _tmp25 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp26 = H1 * (E * (Cx * _tmp25));
+  const Scalar _tmp27 = m * (atoms[1] * _tmp26);
+  const Scalar _tmp28 = m * (atoms[2] * _tmp26);
+  const Scalar _tmp29 = H1 * (E * _tmp25);
+  const Scalar _tmp30 = atoms[1] * _tmp29;
+  const Scalar _tmp31 = m * _tmp30;
+  const Scalar _tmp32 = H1 * (E * (_tmp3 * (_tmp0 * Scalar(4.0))));
+  const Scalar _tmp33 = H1 * (E * (_tmp3 * _tmp25));
+  return (((((((((((((((((m * (atoms[1] * _tmp32)) / _tmp19) + ((_tmp27 / _tmp19) + ((_tmp28 / _tmp24) + (((m * (atoms[2] * _tmp33)) / _tmp24) + (((m * (atoms[2] * _tmp29)) / _tmp8) + (((atoms[1] * _tmp33) / _tmp8) + (((m * _tmp22) / _tmp21) + ((_tmp22 / _tmp21) + (((m * _tmp20) / _tmp21) + ((_tmp20 / _tmp21) + (((_tmp4 * _tmp18) / _tmp19) + ((_tmp6 / _tmp19) + ((_tmp18 / _tmp8) + ((_tmp16 / _tmp8) + ((_tmp15 / _tmp8) + ((_tmp13 / _tmp8) + ((_tmp12 / _tmp8) + ((_tmp6 / _tmp8) + (_tmp10 / _tmp8))))))))))))))))))) - (_tmp23 / _tmp8)) - (_tmp10 / _tmp24)) - (_tmp9 / _tmp24)) - (_tmp13 / _tmp24)) - (_tmp16 / _tmp24)) - (_tmp10 / _tmp19)) - (_tmp12 / _tmp19)) - (_tmp15 / _tmp19)) - (_tmp23 / _tmp19)) - (_tmp27 / _tmp8)) - (_tmp28 / _tmp8)) - (_tmp31 / _tmp8)) - ((_tmp4 * _tmp30) / _tmp19)) - (_tmp31 / _tmp19)) - ((m * (atoms[2] * _tmp32)) / _tmp8);
 }
 
-// The other piece's moment with the other branch's value at x apart (I_{j,l}).
-// Total ops: 81 (16 add, 44 mul, 15 div, 1 sqrt, 3 neg, 2 moment calls), 18 temporaries
+// The atoms of waviness_pressure_beyond_half_flank_other_cauchy_edge, at the point's Cauchy argument y.
+// Total ops: 30 (9 add, 6 mul, 6 div, 0 sqrt, 6 neg, 3 moment calls), 3 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_other(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_flank_other_cauchy_edge_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
+  out[0] = wavecontact::two_factor_edge_moment<Scalar>(0, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
+  out[1] = wavecontact::two_factor_edge_moment<Scalar>(1, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  const Scalar _tmp2 = (Scalar(1.0) + m) * Ca;
+  out[2] = wavecontact::two_factor_edge_moment<Scalar>(2, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp2), -((Scalar(1.0) - Ca) / _tmp2));
+}
+inline constexpr int waviness_pressure_beyond_half_flank_other_cauchy_edge_atoms_outputs = 3;
+
+// Part of the pressure: the same in J'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_flank_other_cauchy_edge_atoms.
+// Total ops: 163 (36 add, 90 mul, 35 div, 1 sqrt, 1 neg), 29 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_other_cauchy_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = Scalar(1.0) + m;
-  const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = Ca * _tmp3;
-  const Scalar _tmp6 = -((Scalar(1.0) + (Ca * m)) / _tmp5);
-  const Scalar _tmp7 = -((Scalar(1.0) - Ca) / _tmp5);
-  const Scalar _tmp8 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp6, _tmp7);
-  const Scalar _tmp9 = _tmp8 * (_tmp4 * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp10 = _tmp2 * _tmp3;
-  const Scalar _tmp11 = b1 * _tmp10;
-  const Scalar _tmp12 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp6, _tmp7);
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp14 = _tmp2 * b1;
+  const Scalar _tmp1 = Scalar(1.0) - (Cx * m);
+  const Scalar _tmp2 = Cx * Cx;
+  const Scalar _tmp3 = m * m;
+  const Scalar _tmp4 = H1 * (E * (_tmp0 * _tmp2));
+  const Scalar _tmp5 = atoms[0] * _tmp4;
+  const Scalar _tmp6 = (_tmp1 * _tmp1) * (Scalar(1.0) + m);
+  const Scalar _tmp7 = b1 * (Sx * ((Ca * Ca) * _tmp6));
+  const Scalar _tmp8 = Cx * _tmp2;
+  const Scalar _tmp9 = H1 * (E * (_tmp0 * _tmp8));
+  const Scalar _tmp10 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp11 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp12 = H1 * (E * (_tmp2 * _tmp11));
+  const Scalar _tmp13 = H1 * (E * (Cx * _tmp11));
+  const Scalar _tmp14 = b1 * (Sx * (Ca * _tmp6));
   const Scalar _tmp15 = H1 * (_tmp0 * E);
-  const Scalar _tmp16 = b1 * (Ca * _tmp10);
-  const Scalar _tmp17 = _tmp0 * Scalar(2.0);
-  return (((((((((_tmp12 * _tmp15) / _tmp14) + (((_tmp12 * (m * _tmp15)) / _tmp14) + (((_tmp12 * _tmp13) / _tmp14) + ((_tmp9 / _tmp11) + ((_tmp12 * (m * _tmp13)) / _tmp14))))) - (_tmp9 / _tmp16)) - ((_tmp8 * (_tmp4 * _tmp13)) / _tmp16)) - ((_tmp8 * _tmp13) / _tmp16)) - ((_tmp8 * _tmp15) / _tmp16)) - ((_tmp8 * (_tmp4 * _tmp15)) / _tmp11)) - ((_tmp8 * (m * (H1 * (E * (Cx * _tmp17))))) / _tmp16)) - ((_tmp8 * (m * (H1 * (E * _tmp17)))) / _tmp16);
+  const Scalar _tmp16 = H1 * (E * _tmp11);
+  const Scalar _tmp17 = _tmp0 * Scalar(4.0);
+  const Scalar _tmp18 = H1 * (E * (_tmp2 * _tmp17));
+  const Scalar _tmp19 = m * (atoms[1] * _tmp18);
+  const Scalar _tmp20 = _tmp13 * atoms[1];
+  const Scalar _tmp21 = _tmp12 * atoms[1];
+  const Scalar _tmp22 = _tmp4 * atoms[2];
+  const Scalar _tmp23 = _tmp3 * _tmp22;
+  const Scalar _tmp24 = _tmp3 * (_tmp9 * atoms[2]);
+  const Scalar _tmp25 = _tmp10 * atoms[2];
+  const Scalar _tmp26 = _tmp15 * atoms[2];
+  const Scalar _tmp27 = b1 * (Sx * _tmp6);
+  const Scalar _tmp28 = m * (_tmp13 * atoms[2]);
+  return (Sa * (((((((((m * (atoms[0] * _tmp12)) / _tmp7) + ((m * (atoms[0] * _tmp13)) / _tmp7)) - ((_tmp3 * _tmp5) / _tmp7)) - (_tmp5 / _tmp7)) - ((_tmp3 * (atoms[0] * _tmp9)) / _tmp7)) - ((atoms[0] * _tmp10) / _tmp7)) * Sa) + (((((((((_tmp19 / _tmp14) + ((_tmp20 / _tmp7) + (((_tmp3 * (atoms[1] * (H1 * (E * (_tmp8 * _tmp11))))) / _tmp7) + ((_tmp21 / _tmp7) + (((m * _tmp20) / _tmp14) + ((_tmp3 * _tmp21) / _tmp7)))))) - ((_tmp3 * (_tmp4 * atoms[1])) / _tmp14)) - ((_tmp3 * (_tmp9 * atoms[1])) / _tmp14)) - ((_tmp10 * atoms[1]) / _tmp14)) - ((atoms[1] * _tmp15) / _tmp14)) - ((m * (atoms[1] * _tmp16)) / _tmp14)) - (_tmp19 / _tmp7)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp17))))) / _tmp7)))) + (((((((((_tmp28 / _tmp7) + (((m * (_tmp12 * atoms[2])) / _tmp7) + (((m * (_tmp16 * atoms[2])) / _tmp14) + (((_tmp3 * _tmp26) / _tmp27) + ((_tmp26 / _tmp14) + ((_tmp25 / _tmp14) + ((_tmp23 / _tmp14) + (_tmp24 / _tmp14)))))))) - (_tmp23 / _tmp7)) - (_tmp22 / _tmp7)) - (_tmp24 / _tmp7)) - (_tmp25 / _tmp7)) - (_tmp23 / _tmp27)) - (_tmp28 / _tmp14)) - ((m * (_tmp18 * atoms[2])) / _tmp14));
 }
 
-// The same in I'_{j,l} (for waviness_pressure_beyond_half_flank_other_argument < 0).
-// Total ops: 90 (18 add, 49 mul, 17 div, 1 sqrt, 3 neg, 2 moment calls), 22 temporaries
+// The atoms of waviness_pressure_beyond_half_flank_other, of the zone.
+// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_other_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
+inline void waviness_pressure_beyond_half_flank_other_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+}
+inline constexpr int waviness_pressure_beyond_half_flank_other_atoms_outputs = 2;
+
+// Part of the pressure: the other piece's moment with the other branch's value at x apart (I_{j,l}), from waviness_pressure_beyond_half_flank_other_atoms.
+// Total ops: 67 (14 add, 38 mul, 13 div, 1 sqrt, 1 neg), 16 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_other(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = Scalar(1.0) + m;
-  const Scalar _tmp3 = Ca * _tmp2;
-  const Scalar _tmp4 = -((Scalar(1.0) + (Ca * m)) / _tmp3);
-  const Scalar _tmp5 = -((Scalar(1.0) - Ca) / _tmp3);
-  const Scalar _tmp6 = wavecontact::edge_moment<Scalar>(1, 2, _tmp4, _tmp5);
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = H1 * (E * (_tmp0 * (Cx * Cx)));
-  const Scalar _tmp9 = _tmp7 * (_tmp6 * _tmp8);
-  const Scalar _tmp10 = (_tmp1 * _tmp1) * _tmp2;
-  const Scalar _tmp11 = b1 * (Ca * _tmp10);
-  const Scalar _tmp12 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp13 = _tmp6 * _tmp12;
-  const Scalar _tmp14 = H1 * (_tmp0 * E);
-  const Scalar _tmp15 = _tmp6 * _tmp14;
-  const Scalar _tmp16 = b1 * _tmp10;
-  const Scalar _tmp17 = wavecontact::edge_moment<Scalar>(0, 2, _tmp4, _tmp5);
-  const Scalar _tmp18 = _tmp17 * (_tmp12 * Sa);
-  const Scalar _tmp19 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp20 = H1 * (E * (Cx * _tmp19));
-  const Scalar _tmp21 = H1 * (E * _tmp19);
-  return (((((((((m * (_tmp6 * _tmp21)) / _tmp11) + (((m * (_tmp6 * _tmp20)) / _tmp11) + (((_tmp7 * _tmp15) / _tmp16) + ((_tmp15 / _tmp11) + ((_tmp13 / _tmp11) + ((_tmp9 / _tmp11) + ((_tmp7 * _tmp13) / _tmp11))))))) - ((_tmp7 * (_tmp17 * (_tmp8 * Sa))) / _tmp11)) - ((_tmp7 * _tmp18) / _tmp11)) - (_tmp18 / _tmp11)) - ((_tmp17 * (_tmp14 * Sa)) / _tmp11)) - (_tmp9 / _tmp16)) - ((m * (_tmp17 * (Sa * _tmp20))) / _tmp11)) - ((m * (_tmp17 * (Sa * _tmp21))) / _tmp11);
+  const Scalar _tmp2 = _tmp1 * _tmp1;
+  const Scalar _tmp3 = m * m;
+  const Scalar _tmp4 = _tmp3 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp5 = _tmp2 * (Scalar(1.0) + m);
+  const Scalar _tmp6 = b1 * _tmp5;
+  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp8 = atoms[0] * _tmp7;
+  const Scalar _tmp9 = _tmp2 * b1;
+  const Scalar _tmp10 = H1 * (_tmp0 * E);
+  const Scalar _tmp11 = atoms[0] * _tmp10;
+  const Scalar _tmp12 = b1 * (Ca * _tmp5);
+  const Scalar _tmp13 = atoms[1] * _tmp7;
+  const Scalar _tmp14 = atoms[1] * _tmp10;
+  const Scalar _tmp15 = _tmp0 * Scalar(2.0);
+  return (((((((((m * _tmp11) / _tmp9) + ((_tmp11 / _tmp9) + (((m * _tmp8) / _tmp9) + ((_tmp4 / _tmp6) + (_tmp8 / _tmp9))))) - (_tmp4 / _tmp12)) - ((_tmp3 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp3 * _tmp14) / _tmp6)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
 }
 
-// The jump of the branches at x times the other piece's Cauchy moment.
-// Total ops: 27 (4 add, 16 mul, 4 div, 1 sqrt, 1 neg, 1 moment calls), 5 temporaries
+// The atoms of waviness_pressure_beyond_half_flank_other_edge, of the zone.
+// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
-inline Scalar waviness_pressure_beyond_half_flank_jump(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
+inline void waviness_pressure_beyond_half_flank_other_edge_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
+  using std::sqrt;
+  const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+}
+inline constexpr int waviness_pressure_beyond_half_flank_other_edge_atoms_outputs = 2;
+
+// Part of the pressure: the same in I'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_flank_other_edge_atoms.
+// Total ops: 80 (16 add, 47 mul, 15 div, 1 sqrt, 1 neg), 16 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_other_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
+  using std::sqrt;
+  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
+  const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp2 = m * m;
+  const Scalar _tmp3 = H1 * (E * (_tmp0 * (Cx * Cx)));
+  const Scalar _tmp4 = _tmp2 * (atoms[1] * _tmp3);
+  const Scalar _tmp5 = (_tmp1 * _tmp1) * (Scalar(1.0) + m);
+  const Scalar _tmp6 = b1 * (Ca * _tmp5);
+  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp8 = atoms[1] * _tmp7;
+  const Scalar _tmp9 = H1 * (_tmp0 * E);
+  const Scalar _tmp10 = atoms[1] * _tmp9;
+  const Scalar _tmp11 = b1 * _tmp5;
+  const Scalar _tmp12 = atoms[0] * (_tmp7 * Sa);
+  const Scalar _tmp13 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp14 = H1 * (E * (Cx * _tmp13));
+  const Scalar _tmp15 = H1 * (E * _tmp13);
+  return (((((((((m * (atoms[1] * _tmp15)) / _tmp6) + (((m * (atoms[1] * _tmp14)) / _tmp6) + (((_tmp2 * _tmp10) / _tmp11) + ((_tmp10 / _tmp6) + ((_tmp8 / _tmp6) + ((_tmp4 / _tmp6) + ((_tmp2 * _tmp8) / _tmp6))))))) - ((_tmp2 * (atoms[0] * (_tmp3 * Sa))) / _tmp6)) - ((_tmp2 * _tmp12) / _tmp6)) - (_tmp12 / _tmp6)) - ((atoms[0] * (_tmp9 * Sa)) / _tmp6)) - (_tmp4 / _tmp11)) - ((m * (atoms[0] * (Sa * _tmp14))) / _tmp6)) - ((m * (atoms[0] * (Sa * _tmp15))) / _tmp6);
+}
+
+// The atoms of waviness_pressure_beyond_half_flank_jump, at the point's Cauchy argument y.
+// Total ops: 1 (0 add, 0 mul, 0 div, 0 sqrt, 0 neg, 1 moment calls), 0 temporaries
+template <typename Scalar>
+inline void waviness_pressure_beyond_half_flank_jump_atoms(const Scalar& /*E*/, const Scalar& /*H1*/, const Scalar& /*b1*/, const Scalar& /*m*/, const Scalar& /*Ca*/, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
+  using std::sqrt;
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 1, y, one_plus_y);
+}
+inline constexpr int waviness_pressure_beyond_half_flank_jump_atoms_outputs = 1;
+
+// Part of the pressure: the jump of the branches at x times the other piece's Cauchy moment, from waviness_pressure_beyond_half_flank_jump_atoms.
+// Total ops: 22 (4 add, 14 mul, 2 div, 1 sqrt, 1 neg), 4 temporaries
+template <typename Scalar>
+inline Scalar waviness_pressure_beyond_half_flank_jump(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = Scalar(1.0) + Cx;
   const Scalar _tmp1 = Cx * m;
   const Scalar _tmp2 = Scalar(1.0) - _tmp1;
   const Scalar _tmp3 = Scalar(1.0) + _tmp1;
-  const Scalar _tmp4 = Ca * Sx;
-  return (wavecontact::quadratic_moment<Scalar>(0, 1, D / _tmp4, (Cx * Sa) / _tmp4) * (m * (H1 * (E * (Cx * ((Scalar(1.0) + m) * (_tmp0 * (sqrt(-(D / (_tmp0 * Ca))) * Scalar(4.0))))))))) / (b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
+  return (m * (atoms[0] * (H1 * (E * (Cx * ((Scalar(1.0) + m) * (_tmp0 * (sqrt(-(D / (_tmp0 * Ca))) * Scalar(4.0))))))))) / (b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
 }
 
 // z of the own piece's pole factor: it selects the basis.

@@ -196,14 +196,17 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
 // J_{j,l} atoms) against the derived v-form at 40 digits (s = tan^2(pi x/(2 b1)) and
 // alpha = tan(pi a/(2 b1)) from the exact inputs), over m from 0 to 1e4, a from just above
 // b1/2 to b1 and x across the zone: at the centre, next to the kink x = b1/2 on either side,
-// around the other branch's pole (cos(pi x/b1) = +-1/m), where the runtime changes forms, and
-// at the edge. Beyond b1/2 the pressure of one zone may change sign (it is then not the
-// contact, see LoadCurve), so the error is taken relative to the largest |p| of the zone's
-// points.
+// around the other branch's pole (cos(pi x/b1) = +-1/m), where the runtime changes forms, at
+// the edge, and at 16 points spread over the zone. Beyond b1/2 the pressure of one zone may
+// change sign (it is then not the contact, see LoadCurve), so the error is taken relative to the
+// largest |p| of the zone's points. The array form is measured too, with those points among
+// 4000 spread over the zone, so that it tabulates the Cauchy part's atoms (CauchyAtomTable) over
+// most of them.
 BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
   wavecontact::test::Precision precision(wavecontact::test::reference_digits);
   const auto& beyond = waviness().beyond_half;
   ErrorReport top{"pressure, a > b1/2, |x| < b1/2"}, flank{"pressure, a > b1/2, |x| > b1/2"};
+  ErrorReport array_top{"pressure (array), a > b1/2, |x| < b1/2"}, array_flank{"pressure (array), a > b1/2, |x| > b1/2"};
   const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
   std::size_t k = 0;
   for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 35.0, 100.0, 1e3, 1e4}) {
@@ -221,6 +224,7 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
           }
         }
       }
+      for (int i = 0; i < 16; ++i) xs.push_back(a * (i + 0.37) / 16);
       const wavecontact::WavinessParams params{H1, b1, m, E};
       std::vector<std::pair<PhysicalPoint, GiNaC::numeric>> references;
       GiNaC::numeric scale = 0;
@@ -232,14 +236,22 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
         references.emplace_back(p, GiNaC::ex_to<GiNaC::numeric>(p_x.subs(p.v_variables()).evalf()));
         scale = std::max(scale, GiNaC::abs(references.back().second));
       }
-      for (const auto& [p, reference] : references) {
-        const double error = (GiNaC::abs(wavecontact::test::exact(wavecontact::pressure(params, a, p.x)) - reference) / scale).to_double();
-        (p.x < 0.5 * b1 ? top : flank).add(error / 2.220446049250313e-16, p);
+      Eigen::ArrayXd spread(4000 + references.size());
+      for (int i = 0; i < 4000; ++i) spread[i] = a * (i + 0.5) / 4000;
+      for (std::size_t i = 0; i < references.size(); ++i) spread[4000 + static_cast<Eigen::Index>(i)] = references[i].first.x;
+      const Eigen::ArrayXd array = wavecontact::pressure(params, a, spread);
+      for (std::size_t i = 0; i < references.size(); ++i) {
+        const auto& [p, reference] = references[i];
+        const auto error = [&](double got) { return (GiNaC::abs(wavecontact::test::exact(got) - reference) / scale).to_double() / 2.220446049250313e-16; };
+        (p.x < 0.5 * b1 ? top : flank).add(error(wavecontact::pressure(params, a, p.x)), p);
+        (p.x < 0.5 * b1 ? array_top : array_flank).add(error(array[4000 + static_cast<Eigen::Index>(i)]), p);
       }
     }
   }
   check(top);
   check(flank);
+  check(array_top);
+  check(array_flank);
 }
 
 // Full contact of eq. 2 (the built-in profile parametric_wave_curve, built with abs()) in closed

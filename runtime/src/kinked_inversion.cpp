@@ -1,18 +1,56 @@
 #include "kinked_inversion.hpp"
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace wavecontact::detail {
 
-double beyond_branch_pressure(const std::function<double(BranchPart)>& part, double own_argument,
-                              double other_argument, double other_over_own, bool at_branch) {
-  const bool other_edge = other_argument < 0;
-  const double own = part(own_argument < 0 ? BranchPart::own_edge : BranchPart::own);
-  if (std::fabs(other_over_own) > 2) {
-    return own + part(other_edge ? BranchPart::other_cauchy_edge : BranchPart::other_cauchy);
+BranchSide::BranchSide(BranchSideForms forms, double own_argument, double other_argument)
+    : forms_(std::move(forms)),
+      own_(own_argument < 0 ? BranchPart::own_edge : BranchPart::own),
+      other_(other_argument < 0 ? BranchPart::other_edge : BranchPart::other),
+      other_cauchy_(other_argument < 0 ? BranchPart::other_cauchy_edge : BranchPart::other_cauchy) {
+  for (int count : forms_.atom_counts) {
+    if (count > max_branch_atoms) {
+      throw std::logic_error("wavecontact::detail::BranchSide: a part has " + std::to_string(count) +
+                             " atoms, more than max_branch_atoms = " + std::to_string(max_branch_atoms));
+    }
   }
-  const double other = part(other_edge ? BranchPart::other_edge : BranchPart::other);
-  return at_branch ? own + other : own + other + part(BranchPart::jump);
+  forms_.atoms(own_, 0, 1, own_atoms_.data());
+  forms_.atoms(other_, 0, 1, other_atoms_.data());
+}
+
+double BranchSide::part_at_point(BranchPart part, const PointAngles& point, const double* y) const {
+  Atoms atoms;
+  if (part != other_cauchy_ || !cauchy_table_.evaluate(std::log(y[1]), atoms.data())) {
+    forms_.atoms(part, y[0], y[1], atoms.data());
+  }
+  return forms_.part(part, point, atoms.data());
+}
+
+double BranchSide::cauchy_eta(const PointAngles& point, double other_over_own) const {
+  if (!(std::fabs(other_over_own) > 2)) return std::numeric_limits<double>::quiet_NaN();
+  double y[2];
+  forms_.cauchy_argument(point, y);
+  return std::log(y[1]);
+}
+
+void BranchSide::tabulate_cauchy(const std::vector<double>& etas) {
+  const BranchPart part = other_cauchy_;
+  cauchy_table_ = CauchyAtomTable([this, part](double y, double one_plus_y, double* atoms) { forms_.atoms(part, y, one_plus_y, atoms); },
+                                  forms_.atom_counts[static_cast<int>(part)], etas);
+}
+
+double BranchSide::pressure(const PointAngles& point, double other_over_own, bool at_branch) const {
+  const double own = forms_.part(own_, point, own_atoms_.data());
+  double y[2];
+  forms_.cauchy_argument(point, y);
+  if (std::fabs(other_over_own) > 2) return own + part_at_point(other_cauchy_, point, y);
+  const double other = forms_.part(other_, point, other_atoms_.data());
+  return at_branch ? own + other : own + other + part_at_point(BranchPart::jump, point, y);
 }
 
 }  // namespace wavecontact::detail

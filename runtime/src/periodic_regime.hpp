@@ -5,6 +5,8 @@
 // and its slope have closed forms (derive/beyond_branch.hpp, derive/sub_interval.hpp).
 #pragma once
 
+#include <cstddef>
+
 #include "kinked_inversion.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
@@ -14,6 +16,24 @@ namespace wavecontact::detail {
 // p(x) in physical units from the closed forms (generated/waviness.hpp), for b1/2 < a < b1 and
 // a point 0 <= x^ < a^.
 double pressure_beyond_half(const WavinessParams& params, const ZoneAngles& zone, const PointAngles& point);
+
+// The same for many points of one zone: both sides of the kink with the zone's atoms kept.
+class BeyondHalfZone {
+ public:
+  BeyondHalfZone(const WavinessParams& params, const ZoneAngles& zone);
+  // p at the points x (reduced to the period; 0 outside the zone |x| < a), with the atoms of the
+  // Cauchy part tabulated over the points that take it (BranchSide::tabulate_cauchy), in chunks
+  // on threads from min_points on (parallel.hpp).
+  void pressures(double a, double b1, const double* x, double* p, std::size_t count, std::size_t min_points);
+  double pressure(const PointAngles& point) const;
+  static double pressure_on_side(double m, const BranchSide& side, const PointAngles& point);
+
+ private:
+  const BranchSide& side(const PointAngles& point) const { return point.Cx >= 0 ? top_ : flank_; }
+
+  double m_;
+  BranchSide top_, flank_;
+};
 
 // F = dP/dSa - dP/dCa of the exact load, 0 < a <= b1, from the closed forms on either side of
 // b1/2 (generated/waviness.hpp): dP/da = (pi/b1) sin(pi a/b1) F (waviness.cpp).

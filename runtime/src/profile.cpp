@@ -4,6 +4,7 @@
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
+#include <utility>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/special_functions/cos_pi.hpp>
@@ -40,12 +41,34 @@ std::string joined(const std::vector<std::string>& names) {
 // Every part of the closed-form pressure beyond the branch point is there.
 bool branch_pressure_complete(const BranchEvaluators& b) {
   for (int side = 0; side < 2; ++side) {
-    if (!b.own_argument[side] || !b.other_argument[side]) return false;
-    for (const auto part : b.pressure_parts[side]) {
-      if (!part) return false;
+    if (!b.own_argument[side] || !b.other_argument[side] || !b.cauchy_argument[side]) return false;
+    for (int k = 0; k < 7; ++k) {
+      const int count = b.atom_counts[side][k];
+      if (!b.pressure_parts[side][k] || !b.part_atoms[side][k] || count < 0 || count > detail::max_branch_atoms) {
+        return false;
+      }
     }
   }
   return true;
+}
+
+// One side of the branch point of the zone, from the profile's emitted parts.
+detail::BranchSide branch_side(const BranchEvaluators& b, const double* q, double E, double b1, const ZoneAngles& zone,
+                               int side) {
+  detail::BranchSideForms forms;
+  for (int k = 0; k < 7; ++k) forms.atom_counts[k] = b.atom_counts[side][k];
+  forms.cauchy_argument = [&b, q, E, b1, zone, side](const PointAngles& point, double* y) {
+    b.cauchy_argument[side](q, E, b1, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D, y);
+  };
+  forms.atoms = [&b, q, E, b1, zone, side](detail::BranchPart part, double y, double one_plus_y, double* atoms) {
+    b.part_atoms[side][static_cast<int>(part)](q, E, b1, zone.Ca, zone.Sa, y, one_plus_y, atoms);
+  };
+  forms.part = [&b, q, E, b1, zone, side](detail::BranchPart part, const PointAngles& point, const double* atoms) {
+    return b.pressure_parts[side][static_cast<int>(part)](q, E, b1, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D,
+                                                          atoms);
+  };
+  return detail::BranchSide(std::move(forms), b.own_argument[side](q, zone.Ca, zone.Sa),
+                            b.other_argument[side](q, zone.Ca, zone.Sa));
 }
 
 }  // namespace
@@ -167,14 +190,9 @@ double Profile::pressure(double a, double x) const {
     const double u = boost::math::sin_pi(y / (2 * params_.b1)) / boost::math::cos_pi(y / (2 * params_.b1));
     const double g_top = b.top_g(q, params_.E, u), g_flank = b.flank_g(q, params_.E, u);
     const double g_own = side == 0 ? g_top : g_flank, g_other = side == 0 ? g_flank : g_top;
-    const auto part = [&](detail::BranchPart which) {
-      return b.pressure_parts[side][static_cast<int>(which)](q, params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx,
-                                                              point.Sx, point.D);
-    };
-    return detail::beyond_branch_pressure(part, b.own_argument[side](q, zone.Ca, zone.Sa),
-                                          b.other_argument[side](q, zone.Ca, zone.Sa),
-                                          g_own == 0 ? 0.0 : g_other / g_own,  // g = 0 at x = 0 only
-                                          point.Cx == b.cosine);
+    return branch_side(b, q, params_.E, params_.b1, zone, side)
+        .pressure(point, g_own == 0 ? 0.0 : g_other / g_own,  // g = 0 at x = 0 only
+                  point.Cx == b.cosine);
   }
   return evaluator_.pressure(q_.data(), params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx,
                              point.Sx, point.D);

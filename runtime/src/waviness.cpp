@@ -57,8 +57,8 @@ double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, do
                                                   point.Cx, point.Sx, point.D);
 }
 
-// Beyond b1/2 the exact form is the closed forms with J_{j,l} atoms, point by point (about a
-// microsecond: no array kernel); the printed one continues its closed form.
+// Beyond b1/2 the exact form is the closed forms with J_{j,l} atoms, with the zone's atoms kept
+// (detail::BeyondHalfZone; no SIMD kernel); the printed one continues its closed form.
 bool beyond_half_exact(const WavinessParams& p, double a, Form form) {
   return form == Form::exact && a > p.b1 / 2;
 }
@@ -84,7 +84,12 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
   const detail::WavinessZone simd_zone{params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa};
   const double* xs = x.data();
   double* ps = p.data();
-  const std::size_t min_points = beyond_half_exact(params, a, form) ? parallel_points_costly : parallel_points;
+  const bool beyond_half = beyond_half_exact(params, a, form);
+  const std::size_t min_points = beyond_half ? parallel_points_costly : parallel_points;
+  if (beyond_half) {
+    detail::BeyondHalfZone(params, zone).pressures(a, params.b1, xs, ps, static_cast<std::size_t>(x.size()), min_points);
+    return;
+  }
   detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, min_points,
                          [&](std::size_t begin, std::size_t end) {
     if (simd) {

@@ -33,10 +33,17 @@ struct BranchEvaluators {
   double (*flank_g)(const double* q, double E, double v) = nullptr;
   // The closed-form pressure beyond the branch point on each side (0: the top, Cx above
   // `cosine`; 1: the flank), in parts: own, own_edge, other_cauchy, other_cauchy_edge, other,
-  // other_edge, jump (derive/beyond_branch.hpp); and each piece's pole argument, which selects
-  // the basis.
+  // other_edge, jump (derive/beyond_branch.hpp), each from its atoms (atom_counts of them:
+  // moments of the zone, or at the Cauchy argument y, 1 + y of the point, derive/emit_common.hpp);
+  // and each piece's pole argument, which selects the basis.
+  void (*cauchy_argument[2])(const double* q, double E, double b1, double Ca, double Sa, double Cx, double Sx, double D,
+                             double* y) = {};
+  using PartAtoms = void (*)(const double* q, double E, double b1, double Ca, double Sa, double y, double one_plus_y,
+                             double* atoms);
+  PartAtoms part_atoms[2][7] = {};
+  int atom_counts[2][7] = {};
   using PressurePart = double (*)(const double* q, double E, double b1, double Ca, double Sa, double Cx, double Sx,
-                                  double D);
+                                  double D, const double* atoms);
   PressurePart pressure_parts[2][7] = {};
   double (*own_argument[2])(const double* q, double Ca, double Sa) = {};
   double (*other_argument[2])(const double* q, double Ca, double Sa) = {};

@@ -7,7 +7,8 @@
 //   0 < z <= 7:     with y = z/(1+z) <= 7/8, 1 + z w^2 = (1+z)(1 - y(1 - w^2)), the series
 //                   (1+z)^-l sum_k C(l+k-1, k) y^k B_{j,k}, B_{j,k} = Int_0^1 w^(2j)(1-w^2)^k dw
 //                   = B_{j,k-1} 2k/(2j+2k+1), also of positive terms;
-//   otherwise:      I_{0,1} = atan(sqrt z)/sqrt z, or atanh(sqrt(-z))/sqrt(-z) by log1p,
+//   otherwise, and for j = 0 at any z != 0:
+//                   I_{0,1} = atan(sqrt z)/sqrt z, or atanh(sqrt(-z))/sqrt(-z) by log1p,
 //                   I_{0,l+1} = 1/(2l (1+z)^l) + (2l-1)/(2l) I_{0,l}, I_{j,0} = 1/(2j+1),
 //                   I_{j+1,l} = (I_{j,l-1} - I_{j,l})/z, which cancels little there.
 // The series converge like (3/4)^k and (7/8)^k (a few hundred terms at most); tests/
@@ -110,8 +111,10 @@ Scalar quadratic_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z)
                               {{"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
                               "j >= 0, l >= 1, z >= -1 finite, 1 + z > 0");
   }
-  return z >= Scalar(-0.75) && z <= Scalar(7) ? detail::quadratic_moment_series(j, l, z, one_plus_z)
-                                               : detail::quadratic_moment_closed(j, l, z, one_plus_z);
+  // I_{0,l} by its closed form wherever it is defined (z != 0): atan or atanh, then a recurrence of
+  // positive terms; for j > 0 the recurrence in j cancels where |z| is small.
+  const bool closed = j == 0 ? z != 0 : !(z >= Scalar(-0.75) && z <= Scalar(7));
+  return closed ? detail::quadratic_moment_closed(j, l, z, one_plus_z) : detail::quadratic_moment_series(j, l, z, one_plus_z);
 }
 
 template <typename Scalar>
