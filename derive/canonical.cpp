@@ -1,6 +1,7 @@
 #include "canonical.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <sstream>
 
 namespace wavecontact::derive {
@@ -62,9 +63,13 @@ std::string canonical_string(const ex& e) {
       const bool power = GiNaC::is_a<GiNaC::power>(factor);
       const ex base = power ? factor.op(0) : factor, exponent = power ? factor.op(1) : ex(1);
       if (GiNaC::is_a<GiNaC::add>(base) && GiNaC::is_a<GiNaC::numeric>(exponent) &&
-          GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer() && leading_term_negative(base)) {
-        if (GiNaC::ex_to<GiNaC::numeric>(exponent).is_odd()) sign = -sign;
-        factors.push_back(canonical_string((-base).expand(), GiNaC::ex_to<GiNaC::numeric>(exponent)));
+          GiNaC::ex_to<GiNaC::numeric>(exponent).is_integer()) {
+        // Written the same way whichever sign the sum was stored with.
+        const GiNaC::numeric& k = GiNaC::ex_to<GiNaC::numeric>(exponent);
+        const bool flip = leading_term_negative(base);
+        if (flip && k.is_odd()) sign = -sign;
+        const std::string fixed = canonical_string(flip ? (-base).expand() : base, k);
+        factors.push_back(k == 1 ? "(" + fixed + ")" : fixed);
       } else {
         factors.push_back(wrapped(factor));
       }
@@ -96,7 +101,46 @@ std::string canonical_string(const ex& base, const GiNaC::numeric& exponent) {
   return wrapped(base) + "^" + wrapped(exponent);
 }
 
+namespace {
+
+// A rational in (1, 2) fixed by a string: the same on every run (libstdc++'s std::hash of a
+// string has no seed).
+GiNaC::numeric generic_value(const std::string& key) {
+  const std::size_t h = std::hash<std::string>()(key);
+  return GiNaC::numeric(1) + GiNaC::numeric(static_cast<long>(h % 999983) + 1, 999991);
+}
+
+// The value of e with every symbol at generic_value(its name), every function call at
+// generic_value(its canonical string) and pi at 355/113: a function of e's value alone, however
+// GiNaC stores it (run to run it may store a sum's terms with factors of opposite signs or
+// differently combined). 0 if undefined there or not a real number.
+GiNaC::numeric value_at_generic_point(const ex& e) {
+  // The calls first (substituting into their arguments first could evaluate them off their domain).
+  GiNaC::exmap calls, point;
+  for (GiNaC::const_preorder_iterator i = e.preorder_begin(); i != e.preorder_end(); ++i) {
+    if (GiNaC::is_a<GiNaC::function>(*i)) calls[*i] = generic_value(canonical_string(*i));
+  }
+  const ex without_calls = e.subs(calls, GiNaC::subs_options::no_pattern);
+  for (GiNaC::const_preorder_iterator i = without_calls.preorder_begin(); i != without_calls.preorder_end(); ++i) {
+    if (GiNaC::is_a<GiNaC::symbol>(*i)) point[*i] = generic_value(GiNaC::ex_to<GiNaC::symbol>(*i).get_name());
+  }
+  point[GiNaC::Pi] = GiNaC::numeric(355, 113);
+  try {
+    const ex value = without_calls.subs(point, GiNaC::subs_options::no_pattern).evalf();
+    if (GiNaC::is_a<GiNaC::numeric>(value) && GiNaC::ex_to<GiNaC::numeric>(value).is_real()) {
+      return GiNaC::ex_to<GiNaC::numeric>(value);
+    }
+  } catch (const std::exception&) {  // a pole at that point
+  }
+  return 0;
+}
+
+}  // namespace
+
 bool leading_term_negative(const ex& sum) {
+  // By value where it is defined: -sum gets the other answer whatever the form GiNaC chose.
+  const GiNaC::numeric value = value_at_generic_point(sum);
+  if (!value.is_zero()) return value.is_negative();
   std::string leading;
   const ex terms = GiNaC::is_a<GiNaC::add>(sum) ? sum : GiNaC::lst{sum};
   for (const ex& term : terms) {  // a constant term leads

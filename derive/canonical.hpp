@@ -24,8 +24,10 @@ std::string canonical_string(const GiNaC::ex& base, const GiNaC::numeric& expone
 // The operands of a sum or product, sorted by canonical string.
 std::vector<GiNaC::ex> sorted_operands(const GiNaC::ex& e);
 
-// Whether the term of a sum that sorts first, signs ignored, is negative: the same term
-// is chosen for e and -e, so flipping the sum when this holds fixes its sign.
+// Whether the sum is negative at a generic point fixed by the names of its symbols and the
+// canonical strings of its function calls (whatever form GiNaC stores it in); where it is 0 or
+// undefined there, whether its term that sorts first, signs ignored, is negative. Either way
+// e and -e get opposite answers, so flipping the sum when this holds fixes its sign.
 bool leading_term_negative(const GiNaC::ex& sum);
 
 // A rational function as "(numerator)/(denominator)" with expanded, sorted polynomials

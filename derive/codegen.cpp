@@ -257,10 +257,14 @@ class Printer {
 
   // Temporaries, then `return value;` or, with a target, `const Scalar target = value;`.
   // The temporaries, then `<assignment><value of root>;`, e.g. assignment = "return ".
+  // The temporaries come in the post-order of the graph from the root (operands in order), which
+  // does not depend on the order in which lowering created the nodes.
   std::string body(int root, OpCounts& counts, const std::string& assignment) {
     std::ostringstream os;
-    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
-      if (uses_[i] == 0) continue;
+    std::vector<int> order;
+    std::vector<bool> visited(nodes_.size(), false);
+    post_order(root, visited, order);
+    for (int i : order) {
       tally(nodes_[i].op, counts);
       if (uses_[i] >= 2 && i != root && !leaf(i)) {
         const std::string value = expression(i, true);
@@ -274,6 +278,15 @@ class Printer {
 
  private:
   bool leaf(int i) const { return nodes_[i].op == Op::Constant || nodes_[i].op == Op::Input; }
+
+  void post_order(int i, std::vector<bool>& visited, std::vector<int>& order) const {
+    if (visited[i]) return;
+    visited[i] = true;
+    for (int operand : {nodes_[i].a, nodes_[i].b, nodes_[i].c, nodes_[i].d}) {
+      if (operand >= 0) post_order(operand, visited, order);
+    }
+    order.push_back(i);
+  }
 
   void count(int i) {
     if (uses_[i]++ > 0) return;

@@ -5,8 +5,8 @@
 // parameters: H1 m.
 // Derived by the Block-Keer change of variables and the bounded inversion (seed eqs. 4-6, 11, 12):
 //   g(v) = ((v^3)*E*H1+(v^3)*E*H1*m+E*H1*m*v+E*H1*v)/((m^2)*(v^4)-2*(m^2)*(v^2)-2*(v^4)*m+1+2*(v^2)+2*m+m^2+v^4)
-// This is its top branch, for cos x^ >= 0, where its abs() are ((1+cos(x)*m)^(-1))*(1+m)*H1*cos(x);
-// beyond, the flank y = (-cos(x)*m+1)^(-1)*(1+m)*H1*cos(x) (derive/branches.hpp).
+// This is its top branch, for cos x^ >= 0, where its abs() are (1+cos(x)*m)^(-1)*(1+m)*H1*cos(x);
+// beyond, the flank y = -(-1+cos(x)*m)^(-1)*(1+m)*H1*cos(x) (derive/branches.hpp).
 // Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_profile(wavecontact::generated::parametric_wave_curve_profile_evaluator());
 #pragma once
@@ -24,11 +24,11 @@ namespace wavecontact::generated {
 template <typename Scalar>
 inline Scalar parametric_wave_curve_pressure(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) + Cx;
-  const Scalar _tmp1 = Scalar(1.0) + m;
+  const Scalar _tmp0 = Scalar(1.0) + m;
+  const Scalar _tmp1 = Scalar(1.0) + Cx;
   const Scalar _tmp2 = Scalar(1.0) + (m * Ca);
   const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
-  return (H1 * (E * (_tmp1 * (_tmp0 * ((Scalar(2.0) + (m * ((m * ((Cx + (Ca * Scalar(2.0))) - (Cx * Ca))) + (Ca + Scalar(3.0))))) * (sqrt((_tmp2 * D) / (_tmp0 * _tmp1)) * Scalar(0.78539816339744828))))))) / (b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
+  return (H1 * (E * (_tmp0 * (_tmp1 * ((Scalar(2.0) + (m * ((m * ((Cx + (Ca * Scalar(2.0))) - (Cx * Ca))) + (Ca + Scalar(3.0))))) * (sqrt((_tmp2 * D) / (_tmp1 * _tmp0)) * Scalar(0.78539816339744828))))))) / (b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
 }
 
 // Load per unit length P (eq. 6).
@@ -70,36 +70,36 @@ inline Scalar parametric_wave_curve_height_slope(const Scalar& H1, const Scalar&
 
 // Load P (eq. 6) once the zone reaches beyond the branch point: the sub-interval moments of both
 // branches (derive/sub_interval.hpp), I_{j,l} from wavecontact/quadratic_moment.hpp.
-// Total ops: 40 (7 add, 16 mul, 8 div, 2 sqrt, 5 neg, 2 moment calls), 7 temporaries
+// Total ops: 39 (7 add, 16 mul, 8 div, 2 sqrt, 4 neg, 2 moment calls), 7 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_load(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
   using std::sqrt;
   const Scalar _tmp0 = Ca * m;
-  const Scalar _tmp1 = Ca * (Scalar(1.0) + m);
-  const Scalar _tmp2 = Scalar(1.0) - Ca;
-  const Scalar _tmp3 = Scalar(1.0) - _tmp0;
-  const Scalar _tmp4 = _tmp3 * _tmp3;
-  const Scalar _tmp5 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp3), _tmp2 / _tmp3);
-  const Scalar _tmp6 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
-  return (((_tmp5 * (m * _tmp6)) / _tmp4) + ((_tmp5 * _tmp6) / _tmp4)) - ((wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + _tmp0) / _tmp1), -(_tmp2 / _tmp1)) * (Sa * (H1 * (E * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))))) / _tmp1);
+  const Scalar _tmp1 = _tmp0 - Scalar(1.0);
+  const Scalar _tmp2 = Ca - Scalar(1.0);
+  const Scalar _tmp3 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), _tmp2 / _tmp1);
+  const Scalar _tmp4 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
+  const Scalar _tmp5 = _tmp1 * _tmp1;
+  const Scalar _tmp6 = Ca * (Scalar(1.0) + m);
+  return (((_tmp3 * (m * _tmp4)) / _tmp5) + ((_tmp3 * _tmp4) / _tmp5)) - ((wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + _tmp0) / _tmp6), _tmp2 / _tmp6) * (Sa * (H1 * (E * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))))) / _tmp6);
 }
 
 // The same load with the top piece in its large-argument form: for parametric_wave_curve_top_piece_argument >= 1.
-// Total ops: 55 (10 add, 24 mul, 12 div, 3 sqrt, 4 neg, 2 moment calls), 10 temporaries
+// Total ops: 56 (10 add, 24 mul, 12 div, 3 sqrt, 5 neg, 2 moment calls), 10 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_near_branch_load(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
   using std::sqrt;
   const Scalar _tmp0 = Ca * m;
-  const Scalar _tmp1 = Scalar(1.0) + _tmp0;
-  const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = Scalar(1.0) - Ca;
-  const Scalar _tmp4 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) + m)) / _tmp1), _tmp3 / _tmp1);
-  const Scalar _tmp5 = Sa * (H1 * (E * (Ca * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))));
-  const Scalar _tmp6 = Scalar(1.0) - _tmp0;
-  const Scalar _tmp7 = _tmp6 * _tmp6;
-  const Scalar _tmp8 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp6), _tmp3 / _tmp6);
-  const Scalar _tmp9 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
-  return ((_tmp8 * _tmp9) / _tmp7) + (((_tmp8 * (m * _tmp9)) / _tmp7) + (((_tmp4 * _tmp5) / _tmp2) + (((Sa * (H1 * (E * (sqrt((m / _tmp1) + (Scalar(1.0) / _tmp1)) * Scalar(1.5707963267948966))))) / _tmp1) + ((_tmp4 * (m * _tmp5)) / _tmp2))));
+  const Scalar _tmp1 = _tmp0 - Scalar(1.0);
+  const Scalar _tmp2 = Ca - Scalar(1.0);
+  const Scalar _tmp3 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), _tmp2 / _tmp1);
+  const Scalar _tmp4 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
+  const Scalar _tmp5 = _tmp1 * _tmp1;
+  const Scalar _tmp6 = Scalar(1.0) + _tmp0;
+  const Scalar _tmp7 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) + m)) / _tmp6), -(_tmp2 / _tmp6));
+  const Scalar _tmp8 = Sa * (H1 * (E * (Ca * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))));
+  const Scalar _tmp9 = _tmp6 * _tmp6;
+  return ((_tmp3 * _tmp4) / _tmp5) + (((_tmp3 * (m * _tmp4)) / _tmp5) + (((_tmp7 * _tmp8) / _tmp9) + (((Sa * (H1 * (E * (sqrt((Scalar(1.0) / _tmp6) + (m / _tmp6)) * Scalar(1.5707963267948966))))) / _tmp6) + ((_tmp7 * (m * _tmp8)) / _tmp9))));
 }
 
 // z of the top piece's I_{j,l} beyond the branch point (it grows without bound as the edge comes down
@@ -112,75 +112,75 @@ inline Scalar parametric_wave_curve_top_piece_argument(const Scalar& /*H1*/, con
 }
 
 // dP/dSa - dP/dCa of parametric_wave_curve_beyond_branch_load, for parametric_wave_curve_top_piece_argument < 0.
-// Total ops: 107 (17 add, 61 mul, 18 div, 2 sqrt, 5 neg, 4 moment calls), 26 temporaries
+// Total ops: 106 (17 add, 61 mul, 18 div, 2 sqrt, 4 neg, 4 moment calls), 26 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_load_slope_factor(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-Ca);
-  const Scalar _tmp1 = Ca * m;
-  const Scalar _tmp2 = Scalar(1.0) - _tmp1;
-  const Scalar _tmp3 = _tmp2 * _tmp2;
-  const Scalar _tmp4 = _tmp2 * _tmp3;
-  const Scalar _tmp5 = -((Ca * (Scalar(1.0) - m)) / _tmp2);
-  const Scalar _tmp6 = Scalar(1.0) - Ca;
-  const Scalar _tmp7 = _tmp6 / _tmp2;
-  const Scalar _tmp8 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp5, _tmp7);
-  const Scalar _tmp9 = Sa * (H1 * (_tmp0 * E));
-  const Scalar _tmp10 = Ca * _tmp4;
-  const Scalar _tmp11 = sqrt(-(Scalar(1.0) / Ca));
-  const Scalar _tmp12 = m + Scalar(1.0);
-  const Scalar _tmp13 = Ca * _tmp12;
-  const Scalar _tmp14 = -((_tmp1 + Scalar(1.0)) / _tmp13);
-  const Scalar _tmp15 = -(_tmp6 / _tmp13);
-  const Scalar _tmp16 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp14, _tmp15);
-  const Scalar _tmp17 = m * m;
-  const Scalar _tmp18 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp19 = H1 * (E * (Ca * _tmp18));
-  const Scalar _tmp20 = Ca * Ca;
-  const Scalar _tmp21 = Sa * (H1 * (E * (_tmp0 * Scalar(3.0))));
-  const Scalar _tmp22 = _tmp3 * _tmp3;
-  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp5, _tmp7);
-  const Scalar _tmp24 = Sa * (H1 * (E * (_tmp0 * Scalar(4.0))));
-  const Scalar _tmp25 = H1 * (E * _tmp18);
-  return ((((((((((((_tmp23 * (_tmp17 * _tmp24)) / _tmp22) + (((_tmp8 * (m * _tmp25)) / _tmp4) + ((_tmp8 * _tmp25) / _tmp4))) - ((_tmp8 * (m * _tmp9)) / _tmp10)) - ((_tmp8 * _tmp9) / _tmp10)) - ((_tmp16 * (H1 * (E * (_tmp11 * Scalar(2.0))))) / _tmp13)) - ((_tmp8 * (_tmp17 * _tmp19)) / _tmp4)) - ((_tmp8 * (m * _tmp19)) / _tmp4)) - ((_tmp16 * (Sa * (H1 * (E * (_tmp11 * Scalar(3.0)))))) / (_tmp12 * _tmp20))) - ((_tmp8 * (_tmp17 * _tmp21)) / _tmp4)) - ((_tmp8 * (m * _tmp21)) / _tmp4)) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp14, _tmp15) * (Sa * (H1 * (E * (_tmp11 * Scalar(4.0)))))) / ((_tmp12 * _tmp12) * (Ca * _tmp20)))) - ((_tmp23 * _tmp24) / _tmp22);
+  const Scalar _tmp0 = Ca * m;
+  const Scalar _tmp1 = _tmp0 - Scalar(1.0);
+  const Scalar _tmp2 = -((Ca * (m - Scalar(1.0))) / _tmp1);
+  const Scalar _tmp3 = Ca - Scalar(1.0);
+  const Scalar _tmp4 = _tmp3 / _tmp1;
+  const Scalar _tmp5 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp2, _tmp4);
+  const Scalar _tmp6 = sqrt(-Ca);
+  const Scalar _tmp7 = Sa * (H1 * (E * (_tmp6 * Scalar(4.0))));
+  const Scalar _tmp8 = m * m;
+  const Scalar _tmp9 = _tmp1 * _tmp1;
+  const Scalar _tmp10 = _tmp9 * _tmp9;
+  const Scalar _tmp11 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp2, _tmp4);
+  const Scalar _tmp12 = Sa * (H1 * (E * (_tmp6 * Scalar(3.0))));
+  const Scalar _tmp13 = _tmp1 * _tmp9;
+  const Scalar _tmp14 = _tmp6 * Scalar(2.0);
+  const Scalar _tmp15 = H1 * (E * (Ca * _tmp14));
+  const Scalar _tmp16 = Sa * (H1 * (_tmp6 * E));
+  const Scalar _tmp17 = Ca * _tmp13;
+  const Scalar _tmp18 = Scalar(1.0) + m;
+  const Scalar _tmp19 = Ca * _tmp18;
+  const Scalar _tmp20 = -((Scalar(1.0) + _tmp0) / _tmp19);
+  const Scalar _tmp21 = _tmp3 / _tmp19;
+  const Scalar _tmp22 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp20, _tmp21);
+  const Scalar _tmp23 = sqrt(-(Scalar(1.0) / Ca));
+  const Scalar _tmp24 = H1 * (E * _tmp14);
+  const Scalar _tmp25 = Ca * Ca;
+  return ((((((((_tmp5 * (_tmp7 * _tmp8)) / _tmp10) + (((_tmp11 * (m * _tmp12)) / _tmp13) + (((_tmp11 * (_tmp8 * _tmp12)) / _tmp13) + (((_tmp11 * (m * _tmp15)) / _tmp13) + (((_tmp11 * (_tmp8 * _tmp15)) / _tmp13) + (((_tmp11 * (m * _tmp16)) / _tmp17) + ((_tmp11 * _tmp16) / _tmp17))))))) - ((_tmp22 * (H1 * (E * (_tmp23 * Scalar(2.0))))) / _tmp19)) - ((_tmp11 * (m * _tmp24)) / _tmp13)) - ((_tmp11 * _tmp24) / _tmp13)) - ((_tmp22 * (Sa * (H1 * (E * (_tmp23 * Scalar(3.0)))))) / (_tmp18 * _tmp25))) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp20, _tmp21) * (Sa * (H1 * (E * (_tmp23 * Scalar(4.0)))))) / ((_tmp18 * _tmp18) * (Ca * _tmp25)))) - ((_tmp5 * _tmp7) / _tmp10);
 }
 
 // The same from the moments of (1 + v^2) g' + v g (no end point differentiated), for
 // parametric_wave_curve_top_piece_argument >= 0.
-// Total ops: 139 (23 add, 79 mul, 24 div, 2 sqrt, 5 neg, 6 moment calls), 29 temporaries
+// Total ops: 138 (23 add, 79 mul, 24 div, 2 sqrt, 4 neg, 6 moment calls), 29 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_load_slope_factor_by_parts(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-(Scalar(1.0) / Ca));
-  const Scalar _tmp1 = Scalar(1.0) + m;
-  const Scalar _tmp2 = Ca * m;
-  const Scalar _tmp3 = Ca * _tmp1;
-  const Scalar _tmp4 = -((Scalar(1.0) + _tmp2) / _tmp3);
-  const Scalar _tmp5 = Scalar(1.0) - Ca;
-  const Scalar _tmp6 = -(_tmp5 / _tmp3);
-  const Scalar _tmp7 = H1 * (_tmp0 * E);
-  const Scalar _tmp8 = _tmp1 * _tmp1;
-  const Scalar _tmp9 = Ca * Ca;
-  const Scalar _tmp10 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp4, _tmp6);
-  const Scalar _tmp11 = _tmp8 * _tmp9;
-  const Scalar _tmp12 = sqrt(-Ca);
-  const Scalar _tmp13 = Scalar(1.0) - _tmp2;
-  const Scalar _tmp14 = _tmp13 * (_tmp13 * _tmp13);
-  const Scalar _tmp15 = -((Ca * (Scalar(1.0) - m)) / _tmp13);
-  const Scalar _tmp16 = _tmp5 / _tmp13;
-  const Scalar _tmp17 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp15, _tmp16);
-  const Scalar _tmp18 = H1 * (E * (_tmp9 * _tmp12));
-  const Scalar _tmp19 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp15, _tmp16);
-  const Scalar _tmp20 = m * m;
-  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp4, _tmp6);
-  const Scalar _tmp22 = Ca * _tmp8;
-  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp15, _tmp16);
-  const Scalar _tmp24 = m * (H1 * (E * (_tmp0 * Scalar(3.0))));
-  const Scalar _tmp25 = _tmp12 * Scalar(3.0);
-  const Scalar _tmp26 = H1 * (E * (_tmp9 * _tmp25));
-  const Scalar _tmp27 = H1 * (E * (Ca * _tmp25));
+  const Scalar _tmp0 = Ca * m;
+  const Scalar _tmp1 = _tmp0 - Scalar(1.0);
+  const Scalar _tmp2 = -((Ca * (m - Scalar(1.0))) / _tmp1);
+  const Scalar _tmp3 = Ca - Scalar(1.0);
+  const Scalar _tmp4 = _tmp3 / _tmp1;
+  const Scalar _tmp5 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp2, _tmp4);
+  const Scalar _tmp6 = m * m;
+  const Scalar _tmp7 = sqrt(-Ca);
+  const Scalar _tmp8 = _tmp1 * (_tmp1 * _tmp1);
+  const Scalar _tmp9 = Scalar(1.0) + m;
+  const Scalar _tmp10 = Ca * _tmp9;
+  const Scalar _tmp11 = -((Scalar(1.0) + _tmp0) / _tmp10);
+  const Scalar _tmp12 = _tmp3 / _tmp10;
+  const Scalar _tmp13 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp11, _tmp12);
+  const Scalar _tmp14 = sqrt(-(Scalar(1.0) / Ca));
+  const Scalar _tmp15 = _tmp9 * _tmp9;
+  const Scalar _tmp16 = Ca * Ca;
+  const Scalar _tmp17 = _tmp15 * _tmp16;
+  const Scalar _tmp18 = _tmp7 * Scalar(3.0);
+  const Scalar _tmp19 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp2, _tmp4);
+  const Scalar _tmp20 = H1 * (E * (_tmp16 * _tmp18));
+  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp11, _tmp12);
+  const Scalar _tmp22 = m * (H1 * (E * (_tmp14 * Scalar(3.0))));
+  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp2, _tmp4);
+  const Scalar _tmp24 = H1 * (E * (_tmp16 * _tmp7));
+  const Scalar _tmp25 = H1 * (_tmp14 * E);
+  const Scalar _tmp26 = Ca * _tmp15;
+  const Scalar _tmp27 = H1 * (E * (Ca * _tmp18));
   const Scalar _tmp28 = m * _tmp27;
-  return (((((((((((_tmp23 * (_tmp20 * (H1 * (E * (Ca * (_tmp12 * Scalar(5.0))))))) / _tmp14) + (((_tmp10 * (m * (H1 * (E * (_tmp0 * Scalar(4.0)))))) / _tmp11) + (((_tmp23 * _tmp28) / _tmp14) + (((_tmp19 * _tmp28) / _tmp14) + (((_tmp19 * (_tmp20 * _tmp27)) / _tmp14) + (((_tmp21 * _tmp24) / _tmp8) + (((_tmp19 * (H1 * (E * _tmp12))) / _tmp14) + (((_tmp17 * _tmp18) / _tmp14) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp4, _tmp6) * _tmp7) / _tmp1) + ((_tmp7 * _tmp10) / _tmp11)))))))))) - ((_tmp17 * (_tmp18 * _tmp20)) / _tmp14)) - ((_tmp21 * (H1 * (E * (_tmp0 * Scalar(2.0))))) / _tmp22)) - ((_tmp23 * (H1 * (E * (Ca * (_tmp12 * Scalar(2.0)))))) / _tmp14)) - ((_tmp10 * _tmp24) / _tmp22)) - ((_tmp23 * (_tmp20 * _tmp26)) / _tmp14)) - ((_tmp23 * (m * _tmp26)) / _tmp14)) - ((_tmp19 * (m * (H1 * (E * _tmp25)))) / _tmp14)) - ((_tmp19 * (_tmp20 * (H1 * (E * (_tmp12 * Scalar(4.0)))))) / _tmp14)) - ((_tmp21 * (m * (H1 * (E * (_tmp0 * Scalar(5.0)))))) / _tmp22);
+  return (((((((((((_tmp5 * (_tmp6 * (H1 * (E * (_tmp7 * Scalar(4.0)))))) / _tmp8) + (((_tmp13 * (m * (H1 * (E * (_tmp14 * Scalar(4.0)))))) / _tmp17) + (((_tmp5 * (m * (H1 * (E * _tmp18)))) / _tmp8) + (((_tmp19 * (m * _tmp20)) / _tmp8) + (((_tmp19 * (_tmp6 * _tmp20)) / _tmp8) + (((_tmp21 * _tmp22) / _tmp15) + (((_tmp19 * (H1 * (E * (Ca * (_tmp7 * Scalar(2.0)))))) / _tmp8) + (((_tmp23 * (_tmp6 * _tmp24)) / _tmp8) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp11, _tmp12) * _tmp25) / _tmp9) + ((_tmp25 * _tmp13) / _tmp17)))))))))) - ((_tmp23 * _tmp24) / _tmp8)) - ((_tmp5 * (H1 * (E * _tmp7))) / _tmp8)) - ((_tmp21 * (H1 * (E * (_tmp14 * Scalar(2.0))))) / _tmp26)) - ((_tmp13 * _tmp22) / _tmp26)) - ((_tmp5 * (_tmp6 * _tmp27)) / _tmp8)) - ((_tmp5 * _tmp28) / _tmp8)) - ((_tmp28 * _tmp19) / _tmp8)) - ((_tmp21 * (m * (H1 * (E * (_tmp14 * Scalar(5.0)))))) / _tmp26)) - ((_tmp19 * (_tmp6 * (H1 * (E * (Ca * (_tmp7 * Scalar(5.0))))))) / _tmp8);
 }
 
 // g(v) of eq. 5 on the top branch (|v| < beta).
@@ -188,9 +188,9 @@ inline Scalar parametric_wave_curve_beyond_branch_load_slope_factor_by_parts(con
 template <typename Scalar>
 inline Scalar parametric_wave_curve_top_g(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& v) {
   using std::sqrt;
-  const Scalar _tmp0 = (v * ((Scalar(1.0) - m) * v)) + (m + Scalar(1.0));
-  const Scalar _tmp1 = H1 + (m * H1);
-  return ((v * (_tmp1 + (v * (v * _tmp1)))) * E) / (_tmp0 * _tmp0);
+  const Scalar _tmp0 = H1 + (m * H1);
+  const Scalar _tmp1 = (v * ((Scalar(1.0) - m) * v)) + (m + Scalar(1.0));
+  return ((v * (_tmp0 + (v * (v * _tmp0)))) * E) / (_tmp1 * _tmp1);
 }
 
 // g(v) of eq. 5 on the flank (|v| > beta).
@@ -198,17 +198,17 @@ inline Scalar parametric_wave_curve_top_g(const Scalar& E, const Scalar& H1, con
 template <typename Scalar>
 inline Scalar parametric_wave_curve_flank_g(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& v) {
   using std::sqrt;
-  const Scalar _tmp0 = (v * ((Scalar(1.0) + m) * v)) + (Scalar(1.0) - m);
-  const Scalar _tmp1 = H1 + (m * H1);
-  return ((v * (_tmp1 + (v * (v * _tmp1)))) * E) / (_tmp0 * _tmp0);
+  const Scalar _tmp0 = H1 + (m * H1);
+  const Scalar _tmp1 = (v * ((Scalar(1.0) + m) * v)) + (Scalar(1.0) - m);
+  return ((v * (_tmp0 + (v * (v * _tmp0)))) * E) / (_tmp1 * _tmp1);
 }
 
 // The flank's profile in Cx = cos x^ (Cx < the branch point's cosine).
-// Total ops: 6 (2 add, 3 mul, 1 div, 0 sqrt, 0 neg), 0 temporaries
+// Total ops: 7 (2 add, 3 mul, 1 div, 0 sqrt, 1 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_flank_height(const Scalar& H1, const Scalar& m, const Scalar& Cx) {
   using std::sqrt;
-  return (H1 * (Cx * (m + Scalar(1.0)))) / (Scalar(1.0) - (Cx * m));
+  return -((H1 * (Cx * (Scalar(1.0) + m))) / ((Cx * m) - Scalar(1.0)));
 }
 
 // dY/dCx on the flank.
@@ -216,7 +216,7 @@ inline Scalar parametric_wave_curve_flank_height(const Scalar& H1, const Scalar&
 template <typename Scalar>
 inline Scalar parametric_wave_curve_flank_height_slope(const Scalar& H1, const Scalar& m, const Scalar& Cx) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Cx * m);
+  const Scalar _tmp0 = (Cx * m) - Scalar(1.0);
   return (H1 + (m * H1)) / (_tmp0 * _tmp0);
 }
 
@@ -227,89 +227,89 @@ inline Scalar parametric_wave_curve_flank_height_slope(const Scalar& H1, const S
 template <typename Scalar>
 inline Scalar parametric_wave_curve_full_contact_pressure(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Cx) {
   using std::sqrt;
-  const Scalar _tmp0 = Cx * Cx;
-  const Scalar _tmp1 = _tmp0 * _tmp0;
-  const Scalar _tmp2 = _tmp1 * m;
-  const Scalar _tmp3 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp4 = Scalar(1.0) + (m * ((m * ((m * ((m * (_tmp1 + _tmp2)) - _tmp3)) - _tmp3)) + Scalar(1.0)));
-  const Scalar _tmp5 = Cx * _tmp0;
-  const Scalar _tmp6 = m + Scalar(1.0);
-  const Scalar _tmp7 = (Scalar(1.0) - m) / _tmp6;
-  const Scalar _tmp8 = Scalar(2.0) / _tmp6;
-  const Scalar _tmp9 = wavecontact::edge_moment<Scalar>(1, 2, _tmp7, _tmp8);
-  const Scalar _tmp10 = m * m;
-  const Scalar _tmp11 = _tmp9 * (_tmp5 * H1);
-  const Scalar _tmp12 = _tmp10 * _tmp10;
-  const Scalar _tmp13 = Cx * H1;
-  const Scalar _tmp14 = Scalar(1.0) + (m * (m * ((m * _tmp2) - _tmp3)));
-  const Scalar _tmp15 = Cx * Scalar(2.0);
-  const Scalar _tmp16 = wavecontact::conjugate_logarithm<Scalar>(Scalar(1.0) - Cx, Cx + Scalar(1.0), -_tmp15);
-  const Scalar _tmp17 = H1 * _tmp16;
-  const Scalar _tmp18 = _tmp13 * _tmp16;
-  const Scalar _tmp19 = wavecontact::edge_moment<Scalar>(0, 2, _tmp7, _tmp8);
-  const Scalar _tmp20 = H1 * (Scalar(2.0) * _tmp5);
-  const Scalar _tmp21 = _tmp19 * _tmp20;
-  const Scalar _tmp22 = m * _tmp10;
-  const Scalar _tmp23 = H1 * _tmp15;
-  return -((E * (Scalar(2.0) * ((((((((((_tmp10 * (_tmp19 * (H1 * (Cx * Scalar(6.0))))) / _tmp4) + (((_tmp22 * (_tmp9 * _tmp23)) / _tmp4) + (((m * _tmp17) / _tmp14) + (((_tmp10 * _tmp17) / _tmp14) + (((_tmp9 * _tmp13) / _tmp4) + (((_tmp10 * _tmp11) / _tmp4) + ((_tmp11 * _tmp12) / _tmp4))))))) - ((_tmp10 * _tmp18) / _tmp14)) - ((m * _tmp18) / _tmp14)) - ((_tmp10 * _tmp21) / _tmp4)) - ((_tmp22 * (_tmp9 * _tmp20)) / _tmp4)) - ((_tmp12 * _tmp21) / _tmp4)) - ((_tmp19 * _tmp23) / _tmp4)) - ((_tmp10 * (_tmp9 * (H1 * (Cx * Scalar(3.0))))) / _tmp4)))) / b1);
+  const Scalar _tmp0 = m * m;
+  const Scalar _tmp1 = m + Scalar(1.0);
+  const Scalar _tmp2 = -((m - Scalar(1.0)) / _tmp1);
+  const Scalar _tmp3 = Scalar(2.0) / _tmp1;
+  const Scalar _tmp4 = wavecontact::edge_moment<Scalar>(1, 2, _tmp2, _tmp3);
+  const Scalar _tmp5 = Cx * Cx;
+  const Scalar _tmp6 = _tmp5 * _tmp5;
+  const Scalar _tmp7 = _tmp6 * m;
+  const Scalar _tmp8 = _tmp5 * Scalar(2.0);
+  const Scalar _tmp9 = Scalar(1.0) + (m * (Scalar(1.0) + (m * ((m * ((m * (_tmp6 + _tmp7)) - _tmp8)) - _tmp8))));
+  const Scalar _tmp10 = Cx * Scalar(2.0);
+  const Scalar _tmp11 = H1 * _tmp10;
+  const Scalar _tmp12 = wavecontact::edge_moment<Scalar>(0, 2, _tmp2, _tmp3);
+  const Scalar _tmp13 = _tmp0 * _tmp0;
+  const Scalar _tmp14 = Cx * _tmp5;
+  const Scalar _tmp15 = H1 * (Scalar(2.0) * _tmp14);
+  const Scalar _tmp16 = _tmp12 * _tmp15;
+  const Scalar _tmp17 = m * _tmp0;
+  const Scalar _tmp18 = wavecontact::conjugate_logarithm<Scalar>(Scalar(1.0) - Cx, Cx + Scalar(1.0), -_tmp10);
+  const Scalar _tmp19 = Cx * H1;
+  const Scalar _tmp20 = _tmp18 * _tmp19;
+  const Scalar _tmp21 = (m * (m * ((m * _tmp7) - _tmp8))) + Scalar(1.0);
+  const Scalar _tmp22 = _tmp4 * (H1 * _tmp14);
+  const Scalar _tmp23 = H1 * _tmp18;
+  return (E * (Scalar(2.0) * ((((((((((_tmp0 * (_tmp4 * (H1 * (Cx * Scalar(3.0))))) / _tmp9) + (((_tmp11 * _tmp12) / _tmp9) + (((_tmp13 * _tmp16) / _tmp9) + (((_tmp17 * (_tmp4 * _tmp15)) / _tmp9) + (((_tmp0 * _tmp16) / _tmp9) + (((_tmp0 * _tmp20) / _tmp21) + ((m * _tmp20) / _tmp21))))))) - ((_tmp0 * _tmp22) / _tmp9)) - ((_tmp22 * _tmp13) / _tmp9)) - ((_tmp19 * _tmp4) / _tmp9)) - ((_tmp0 * _tmp23) / _tmp21)) - ((m * _tmp23) / _tmp21)) - ((_tmp17 * (_tmp4 * _tmp11)) / _tmp9)) - ((_tmp0 * (_tmp12 * (H1 * (Cx * Scalar(6.0))))) / _tmp9)))) / b1;
 }
 
 // The same for Cx above the branch point's cosine, the flank's moment with its Cauchy factor (J'_{j,l}).
-// Total ops: 89 (27 add, 35 mul, 20 div, 0 sqrt, 2 neg, 5 moment calls), 21 temporaries
+// Total ops: 88 (27 add, 35 mul, 20 div, 0 sqrt, 1 neg, 5 moment calls), 21 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_full_contact_pressure_top(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Cx) {
   using std::sqrt;
-  const Scalar _tmp0 = (Cx * Cx) * m;
-  const Scalar _tmp1 = Cx * Scalar(2.0);
-  const Scalar _tmp2 = Scalar(1.0) + (m * ((m * (_tmp0 + (Cx * ((Cx * Scalar(1.0)) + Scalar(2.0))))) + (Scalar(1.0) + _tmp1)));
-  const Scalar _tmp3 = m + Scalar(1.0);
-  const Scalar _tmp4 = (Scalar(1.0) - m) / _tmp3;
-  const Scalar _tmp5 = Scalar(2.0) / _tmp3;
-  const Scalar _tmp6 = wavecontact::edge_moment<Scalar>(1, 2, _tmp4, _tmp5);
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = Cx * H1;
-  const Scalar _tmp9 = _tmp6 * _tmp8;
-  const Scalar _tmp10 = Scalar(1.0) + (m * (_tmp0 + _tmp1));
-  const Scalar _tmp11 = Cx + Scalar(1.0);
-  const Scalar _tmp12 = -((Scalar(1.0) - Cx) / _tmp11);
-  const Scalar _tmp13 = _tmp1 / _tmp11;
-  const Scalar _tmp14 = wavecontact::quadratic_moment<Scalar>(0, 1, _tmp12, _tmp13);
-  const Scalar _tmp15 = H1 * _tmp6;
-  const Scalar _tmp16 = wavecontact::edge_moment<Scalar>(0, 2, _tmp4, _tmp5);
-  const Scalar _tmp17 = _tmp1 * H1;
-  const Scalar _tmp18 = _tmp16 * _tmp17;
-  const Scalar _tmp19 = H1 * Scalar(4.0);
-  const Scalar _tmp20 = m + (_tmp11 + (Cx * m));
-  return -((((((((((((((_tmp19 * wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp12, _tmp13, _tmp4, _tmp5)) / _tmp20) + (((m * (_tmp6 * (Scalar(2.0) * H1))) / _tmp2) + (((H1 * _tmp14) / _tmp10) + (((_tmp14 * (m * H1)) / _tmp10) + (((_tmp7 * _tmp9) / _tmp2) + (_tmp9 / _tmp2)))))) - ((_tmp7 * _tmp15) / _tmp2)) - (_tmp15 / _tmp2)) - ((_tmp14 * (m * _tmp8)) / _tmp10)) - ((_tmp8 * _tmp14) / _tmp10)) - ((_tmp7 * _tmp18) / _tmp2)) - (_tmp18 / _tmp2)) - ((m * (_tmp6 * _tmp17)) / _tmp2)) - ((m * (_tmp16 * _tmp19)) / _tmp2)) - ((_tmp19 * wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp12, _tmp13, _tmp4, _tmp5)) / _tmp20)) * E) / b1);
+  const Scalar _tmp0 = H1 * Scalar(4.0);
+  const Scalar _tmp1 = Cx + Scalar(1.0);
+  const Scalar _tmp2 = (Cx - Scalar(1.0)) / _tmp1;
+  const Scalar _tmp3 = Cx * Scalar(2.0);
+  const Scalar _tmp4 = _tmp3 / _tmp1;
+  const Scalar _tmp5 = m + Scalar(1.0);
+  const Scalar _tmp6 = -((m - Scalar(1.0)) / _tmp5);
+  const Scalar _tmp7 = Scalar(2.0) / _tmp5;
+  const Scalar _tmp8 = m + (_tmp1 + (Cx * m));
+  const Scalar _tmp9 = wavecontact::edge_moment<Scalar>(0, 2, _tmp6, _tmp7);
+  const Scalar _tmp10 = (Cx * Cx) * m;
+  const Scalar _tmp11 = Scalar(1.0) + (m * ((m * (_tmp10 + (Cx * ((Cx * Scalar(1.0)) + Scalar(2.0))))) + (Scalar(1.0) + _tmp3)));
+  const Scalar _tmp12 = wavecontact::edge_moment<Scalar>(1, 2, _tmp6, _tmp7);
+  const Scalar _tmp13 = _tmp3 * H1;
+  const Scalar _tmp14 = _tmp9 * _tmp13;
+  const Scalar _tmp15 = m * m;
+  const Scalar _tmp16 = wavecontact::quadratic_moment<Scalar>(0, 1, _tmp2, _tmp4);
+  const Scalar _tmp17 = Cx * H1;
+  const Scalar _tmp18 = Scalar(1.0) + (m * (_tmp10 + _tmp3));
+  const Scalar _tmp19 = H1 * _tmp12;
+  const Scalar _tmp20 = _tmp12 * _tmp17;
+  return ((((((((((_tmp0 * wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp2, _tmp4, _tmp6, _tmp7)) / _tmp8) + (((m * (_tmp0 * _tmp9)) / _tmp11) + (((m * (_tmp12 * _tmp13)) / _tmp11) + ((_tmp14 / _tmp11) + (((_tmp15 * _tmp14) / _tmp11) + (((_tmp16 * _tmp17) / _tmp18) + (((_tmp16 * (m * _tmp17)) / _tmp18) + (((_tmp15 * _tmp19) / _tmp11) + (_tmp19 / _tmp11))))))))) - ((_tmp15 * _tmp20) / _tmp11)) - (_tmp20 / _tmp11)) - ((_tmp16 * (m * H1)) / _tmp18)) - ((H1 * _tmp16) / _tmp18)) - ((m * (_tmp12 * (Scalar(2.0) * H1))) / _tmp11)) - ((wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp2, _tmp4, _tmp6, _tmp7) * _tmp0) / _tmp8)) * E) / b1;
 }
 
 // The same for Cx below the branch point's cosine, the top's moment with its Cauchy factor (J'_{j,l}).
-// Total ops: 90 (27 add, 35 mul, 20 div, 0 sqrt, 3 neg, 5 moment calls), 21 temporaries
+// Total ops: 89 (28 add, 35 mul, 20 div, 0 sqrt, 1 neg, 5 moment calls), 21 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_full_contact_pressure_flank(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Cx) {
   using std::sqrt;
-  const Scalar _tmp0 = (Cx * Cx) * m;
-  const Scalar _tmp1 = Cx * Scalar(2.0);
-  const Scalar _tmp2 = Scalar(1.0) + (m * ((m * (_tmp0 + (Cx * ((Cx * Scalar(1.0)) - Scalar(2.0))))) + (Scalar(1.0) - _tmp1)));
-  const Scalar _tmp3 = m + Scalar(1.0);
-  const Scalar _tmp4 = (Scalar(1.0) - m) / _tmp3;
-  const Scalar _tmp5 = Scalar(2.0) / _tmp3;
-  const Scalar _tmp6 = wavecontact::edge_moment<Scalar>(1, 2, _tmp4, _tmp5);
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = Cx * H1;
-  const Scalar _tmp9 = _tmp6 * _tmp8;
-  const Scalar _tmp10 = H1 * _tmp6;
-  const Scalar _tmp11 = Scalar(1.0) + (m * (_tmp0 - _tmp1));
-  const Scalar _tmp12 = Scalar(1.0) - Cx;
-  const Scalar _tmp13 = -((Cx + Scalar(1.0)) / _tmp12);
-  const Scalar _tmp14 = -(_tmp1 / _tmp12);
-  const Scalar _tmp15 = wavecontact::quadratic_moment<Scalar>(0, 1, _tmp13, _tmp14);
-  const Scalar _tmp16 = wavecontact::edge_moment<Scalar>(0, 2, _tmp4, _tmp5);
-  const Scalar _tmp17 = _tmp1 * H1;
-  const Scalar _tmp18 = _tmp16 * _tmp17;
-  const Scalar _tmp19 = (_tmp3 - Cx) - (Cx * m);
-  const Scalar _tmp20 = H1 * Scalar(4.0);
-  return -((((((((((((((_tmp20 * wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp13, _tmp14, _tmp4, _tmp5)) / _tmp19) + (((m * (_tmp16 * _tmp20)) / _tmp2) + ((_tmp10 / _tmp2) + ((_tmp9 / _tmp2) + (((_tmp7 * _tmp9) / _tmp2) + ((_tmp7 * _tmp10) / _tmp2)))))) - ((_tmp15 * (m * _tmp8)) / _tmp11)) - ((_tmp8 * _tmp15) / _tmp11)) - ((_tmp15 * (m * H1)) / _tmp11)) - ((H1 * _tmp15) / _tmp11)) - ((_tmp7 * _tmp18) / _tmp2)) - (_tmp18 / _tmp2)) - ((m * (_tmp6 * _tmp17)) / _tmp2)) - ((m * (_tmp6 * (Scalar(2.0) * H1))) / _tmp2)) - ((wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp13, _tmp14, _tmp4, _tmp5) * _tmp20) / _tmp19)) * E) / b1);
+  const Scalar _tmp0 = H1 * Scalar(4.0);
+  const Scalar _tmp1 = Cx - Scalar(1.0);
+  const Scalar _tmp2 = (Cx + Scalar(1.0)) / _tmp1;
+  const Scalar _tmp3 = Cx * Scalar(2.0);
+  const Scalar _tmp4 = _tmp3 / _tmp1;
+  const Scalar _tmp5 = m + Scalar(1.0);
+  const Scalar _tmp6 = -((m - Scalar(1.0)) / _tmp5);
+  const Scalar _tmp7 = Scalar(2.0) / _tmp5;
+  const Scalar _tmp8 = ((Cx + (Cx * m)) - Scalar(1.0)) - m;
+  const Scalar _tmp9 = wavecontact::edge_moment<Scalar>(1, 2, _tmp6, _tmp7);
+  const Scalar _tmp10 = (Cx * Cx) * m;
+  const Scalar _tmp11 = Scalar(1.0) + (m * ((m * (_tmp10 + (Cx * ((Cx * Scalar(1.0)) - Scalar(2.0))))) + (Scalar(1.0) - _tmp3)));
+  const Scalar _tmp12 = _tmp3 * H1;
+  const Scalar _tmp13 = wavecontact::edge_moment<Scalar>(0, 2, _tmp6, _tmp7);
+  const Scalar _tmp14 = _tmp13 * _tmp12;
+  const Scalar _tmp15 = m * m;
+  const Scalar _tmp16 = wavecontact::quadratic_moment<Scalar>(0, 1, _tmp2, _tmp4);
+  const Scalar _tmp17 = (m * (_tmp10 - _tmp3)) + Scalar(1.0);
+  const Scalar _tmp18 = Cx * H1;
+  const Scalar _tmp19 = _tmp18 * _tmp9;
+  const Scalar _tmp20 = H1 * _tmp9;
+  return ((((((((((_tmp0 * wavecontact::two_factor_edge_moment<Scalar>(0, 2, _tmp2, _tmp4, _tmp6, _tmp7)) / _tmp8) + (((m * (_tmp9 * (Scalar(2.0) * H1))) / _tmp11) + (((m * (_tmp9 * _tmp12)) / _tmp11) + ((_tmp14 / _tmp11) + (((_tmp15 * _tmp14) / _tmp11) + (((H1 * _tmp16) / _tmp17) + (((_tmp16 * (m * H1)) / _tmp17) + (((_tmp16 * (m * _tmp18)) / _tmp17) + ((_tmp16 * _tmp18) / _tmp17))))))))) - ((_tmp15 * _tmp19) / _tmp11)) - ((_tmp15 * _tmp20) / _tmp11)) - (_tmp19 / _tmp11)) - (_tmp20 / _tmp11)) - ((m * (_tmp13 * _tmp0)) / _tmp11)) - ((_tmp0 * wavecontact::two_factor_edge_moment<Scalar>(1, 2, _tmp2, _tmp4, _tmp6, _tmp7)) / _tmp8)) * E) / b1;
 }
 
 // Contact pressure p(x) on the top branch (|x^| below the branch point) of a zone reaching beyond the branch point: eq. 12
@@ -325,14 +325,14 @@ inline void parametric_wave_curve_beyond_branch_pressure_top_cauchy_argument(con
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_cauchy_argument_outputs = 2;
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_own, of the zone.
-// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_top_own_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
   const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
-  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
   const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
-  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_own_atoms_outputs = 2;
 
@@ -342,33 +342,33 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_own(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = m * m;
-  const Scalar _tmp4 = _tmp3 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp5 = _tmp2 * (Scalar(1.0) + m);
-  const Scalar _tmp6 = b1 * _tmp5;
-  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp8 = atoms[0] * _tmp7;
-  const Scalar _tmp9 = _tmp2 * b1;
-  const Scalar _tmp10 = H1 * (_tmp0 * E);
-  const Scalar _tmp11 = atoms[0] * _tmp10;
-  const Scalar _tmp12 = b1 * (Ca * _tmp5);
-  const Scalar _tmp13 = atoms[1] * _tmp7;
-  const Scalar _tmp14 = atoms[1] * _tmp10;
+  const Scalar _tmp1 = H1 * (_tmp0 * E);
+  const Scalar _tmp2 = atoms[0] * _tmp1;
+  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp4 = _tmp3 * _tmp3;
+  const Scalar _tmp5 = _tmp4 * b1;
+  const Scalar _tmp6 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp7 = atoms[0] * _tmp6;
+  const Scalar _tmp8 = m * m;
+  const Scalar _tmp9 = _tmp8 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp10 = _tmp4 * (Scalar(1.0) + m);
+  const Scalar _tmp11 = b1 * _tmp10;
+  const Scalar _tmp12 = b1 * (Ca * _tmp10);
+  const Scalar _tmp13 = atoms[1] * _tmp6;
+  const Scalar _tmp14 = atoms[1] * _tmp1;
   const Scalar _tmp15 = _tmp0 * Scalar(2.0);
-  return (((((((((m * _tmp11) / _tmp9) + ((_tmp11 / _tmp9) + (((m * _tmp8) / _tmp9) + ((_tmp4 / _tmp6) + (_tmp8 / _tmp9))))) - (_tmp4 / _tmp12)) - ((_tmp3 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp3 * _tmp14) / _tmp6)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
+  return (((((((((m * _tmp2) / _tmp5) + ((_tmp2 / _tmp5) + (((m * _tmp7) / _tmp5) + ((_tmp9 / _tmp11) + (_tmp7 / _tmp5))))) - (_tmp9 / _tmp12)) - ((_tmp8 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp8 * _tmp14) / _tmp11)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_own_edge, of the zone.
-// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_top_own_edge_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
   const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
-  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
   const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
-  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_own_edge_atoms_outputs = 2;
 
@@ -378,22 +378,22 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_own_edge(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = m * m;
-  const Scalar _tmp3 = H1 * (E * (_tmp0 * (Cx * Cx)));
-  const Scalar _tmp4 = _tmp2 * (atoms[1] * _tmp3);
-  const Scalar _tmp5 = (_tmp1 * _tmp1) * (Scalar(1.0) + m);
-  const Scalar _tmp6 = b1 * (Ca * _tmp5);
-  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp8 = atoms[1] * _tmp7;
-  const Scalar _tmp9 = H1 * (_tmp0 * E);
-  const Scalar _tmp10 = atoms[1] * _tmp9;
-  const Scalar _tmp11 = b1 * _tmp5;
-  const Scalar _tmp12 = atoms[0] * (_tmp7 * Sa);
-  const Scalar _tmp13 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp14 = H1 * (E * (Cx * _tmp13));
-  const Scalar _tmp15 = H1 * (E * _tmp13);
-  return (((((((((m * (atoms[1] * _tmp15)) / _tmp6) + (((m * (atoms[1] * _tmp14)) / _tmp6) + (((_tmp2 * _tmp10) / _tmp11) + ((_tmp10 / _tmp6) + ((_tmp8 / _tmp6) + ((_tmp4 / _tmp6) + ((_tmp2 * _tmp8) / _tmp6))))))) - ((_tmp2 * (atoms[0] * (_tmp3 * Sa))) / _tmp6)) - ((_tmp2 * _tmp12) / _tmp6)) - (_tmp12 / _tmp6)) - ((atoms[0] * (_tmp9 * Sa)) / _tmp6)) - (_tmp4 / _tmp11)) - ((m * (atoms[0] * (Sa * _tmp14))) / _tmp6)) - ((m * (atoms[0] * (Sa * _tmp15))) / _tmp6);
+  const Scalar _tmp1 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp2 = H1 * (E * _tmp1);
+  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp4 = (_tmp3 * _tmp3) * (Scalar(1.0) + m);
+  const Scalar _tmp5 = b1 * (Ca * _tmp4);
+  const Scalar _tmp6 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = H1 * (_tmp0 * E);
+  const Scalar _tmp9 = atoms[1] * _tmp8;
+  const Scalar _tmp10 = b1 * _tmp4;
+  const Scalar _tmp11 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp12 = atoms[1] * _tmp11;
+  const Scalar _tmp13 = H1 * (E * (_tmp0 * (Cx * Cx)));
+  const Scalar _tmp14 = _tmp7 * (atoms[1] * _tmp13);
+  const Scalar _tmp15 = atoms[0] * (_tmp11 * Sa);
+  return (((((((((m * (atoms[1] * _tmp2)) / _tmp5) + (((m * (atoms[1] * _tmp6)) / _tmp5) + (((_tmp7 * _tmp9) / _tmp10) + ((_tmp9 / _tmp5) + ((_tmp12 / _tmp5) + ((_tmp14 / _tmp5) + ((_tmp7 * _tmp12) / _tmp5))))))) - ((_tmp7 * (atoms[0] * (_tmp13 * Sa))) / _tmp5)) - ((_tmp7 * _tmp15) / _tmp5)) - (_tmp15 / _tmp5)) - ((atoms[0] * (_tmp8 * Sa)) / _tmp5)) - (_tmp14 / _tmp10)) - ((m * (atoms[0] * (Sa * _tmp6))) / _tmp5)) - ((m * (atoms[0] * (Sa * _tmp2))) / _tmp5);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_other_cauchy, at the point's Cauchy argument y.
@@ -401,12 +401,12 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_own_edge(const Sc
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
-  out[0] = wavecontact::two_factor_moment<Scalar>(0, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  out[1] = wavecontact::two_factor_moment<Scalar>(1, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
-  const Scalar _tmp2 = Scalar(1.0) - (Ca * m);
-  out[2] = wavecontact::two_factor_moment<Scalar>(2, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp2), (Scalar(1.0) - Ca) / _tmp2);
+  const Scalar _tmp0 = (Ca * m) - Scalar(1.0);
+  out[0] = wavecontact::two_factor_moment<Scalar>(0, 2, y, one_plus_y, -((Ca * (m - Scalar(1.0))) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
+  const Scalar _tmp1 = (Ca * m) - Scalar(1.0);
+  out[1] = wavecontact::two_factor_moment<Scalar>(1, 2, y, one_plus_y, -((Ca * (m - Scalar(1.0))) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  out[2] = wavecontact::two_factor_moment<Scalar>(2, 2, y, one_plus_y, -((Ca * (m - Scalar(1.0))) / _tmp2), (Ca - Scalar(1.0)) / _tmp2);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_atoms_outputs = 3;
 
@@ -416,49 +416,49 @@ inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_other_cauc
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_cauchy(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  const Scalar _tmp2 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp3 = Ca * Ca;
-  const Scalar _tmp4 = Cx * Cx;
-  const Scalar _tmp5 = m * m;
-  const Scalar _tmp6 = _tmp0 * _tmp3;
-  const Scalar _tmp7 = H1 * (E * (_tmp4 * _tmp6));
-  const Scalar _tmp8 = atoms[0] * _tmp7;
-  const Scalar _tmp9 = b1 * (D * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2)));
-  const Scalar _tmp10 = m * _tmp5;
-  const Scalar _tmp11 = Cx * _tmp4;
-  const Scalar _tmp12 = atoms[1] * (H1 * (E * (_tmp6 * _tmp11)));
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp6));
-  const Scalar _tmp14 = atoms[2] * (Sx * _tmp13);
-  const Scalar _tmp15 = H1 * (E * _tmp6);
-  const Scalar _tmp16 = atoms[2] * (Sx * _tmp15);
-  const Scalar _tmp17 = atoms[1] * _tmp15;
-  const Scalar _tmp18 = atoms[0] * (H1 * (E * (_tmp0 * _tmp4)));
-  const Scalar _tmp19 = atoms[0] * (H1 * (E * (_tmp0 * _tmp11)));
-  const Scalar _tmp20 = Ca * _tmp0;
-  const Scalar _tmp21 = H1 * (E * _tmp20);
-  const Scalar _tmp22 = atoms[0] * _tmp21;
-  const Scalar _tmp23 = atoms[1] * _tmp21;
-  const Scalar _tmp24 = atoms[0] * _tmp15;
-  const Scalar _tmp25 = H1 * (E * (_tmp4 * _tmp20));
-  const Scalar _tmp26 = atoms[1] * _tmp25;
-  const Scalar _tmp27 = H1 * (E * (_tmp11 * _tmp20));
-  const Scalar _tmp28 = atoms[0] * _tmp27;
-  const Scalar _tmp29 = atoms[1] * _tmp27;
-  const Scalar _tmp30 = H1 * (E * (Cx * _tmp20));
-  const Scalar _tmp31 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp32 = Ca * _tmp31;
-  const Scalar _tmp33 = atoms[1] * (H1 * (E * (_tmp4 * _tmp32)));
-  const Scalar _tmp34 = H1 * (E * (Cx * _tmp32));
-  const Scalar _tmp35 = H1 * (E * _tmp32);
-  const Scalar _tmp36 = _tmp0 * Scalar(3.0);
-  const Scalar _tmp37 = H1 * (E * (Cx * (Ca * _tmp36)));
-  const Scalar _tmp38 = _tmp0 * Scalar(4.0);
-  const Scalar _tmp39 = _tmp3 * _tmp31;
-  const Scalar _tmp40 = _tmp3 * _tmp36;
-  const Scalar _tmp41 = atoms[0] * (H1 * (E * (_tmp4 * _tmp36)));
-  return ((((((((((((((((((((((((((((((m * (atoms[1] * (H1 * (E * (_tmp4 * (_tmp3 * _tmp38)))))) / _tmp9) + (((m * (atoms[0] * (H1 * (E * (Cx * _tmp36))))) / _tmp9) + (((m * _tmp41) / _tmp9) + (((_tmp5 * _tmp41) / _tmp9) + (((m * (atoms[1] * (H1 * (E * (Cx * _tmp40))))) / _tmp9) + (((_tmp5 * (atoms[1] * (H1 * (E * (_tmp4 * _tmp40))))) / _tmp9) + (((_tmp5 * (atoms[0] * (H1 * (E * (Cx * _tmp31))))) / _tmp9) + (((_tmp5 * (atoms[0] * _tmp35)) / _tmp9) + (((_tmp10 * (atoms[1] * (H1 * (E * _tmp39)))) / _tmp9) + (((_tmp5 * (atoms[1] * (H1 * (E * (Cx * _tmp39))))) / _tmp9) + (((atoms[0] * (H1 * (E * (Cx * _tmp0)))) / _tmp9) + ((_tmp23 / _tmp9) + (((m * _tmp22) / _tmp9) + (((_tmp10 * _tmp19) / _tmp9) + (((_tmp5 * _tmp19) / _tmp9) + ((_tmp18 / _tmp9) + (((_tmp10 * _tmp18) / _tmp9) + ((_tmp17 / _tmp9) + (((m * _tmp16) / _tmp9) + (((atoms[1] * _tmp13) / _tmp9) + (((m * _tmp14) / _tmp9) + (((_tmp5 * _tmp16) / _tmp9) + (((_tmp5 * _tmp14) / _tmp9) + (((_tmp10 * _tmp12) / _tmp9) + (((_tmp5 * _tmp12) / _tmp9) + (((_tmp5 * _tmp8) / _tmp9) + ((_tmp8 * _tmp10) / _tmp9))))))))))))))))))))))))))) - ((_tmp10 * (_tmp7 * atoms[1])) / _tmp9)) - ((_tmp5 * _tmp24) / _tmp9)) - ((_tmp10 * _tmp14) / _tmp9)) - ((_tmp10 * _tmp16) / _tmp9)) - ((_tmp10 * _tmp24) / _tmp9)) - (_tmp14 / _tmp9)) - (_tmp16 / _tmp9)) - ((m * _tmp17) / _tmp9)) - ((_tmp5 * _tmp26) / _tmp9)) - ((_tmp10 * (atoms[0] * _tmp25)) / _tmp9)) - ((_tmp10 * _tmp26) / _tmp9)) - ((_tmp5 * _tmp28) / _tmp9)) - ((_tmp5 * _tmp29) / _tmp9)) - ((_tmp10 * _tmp28) / _tmp9)) - ((_tmp10 * _tmp29) / _tmp9)) - ((atoms[0] * _tmp30) / _tmp9)) - ((atoms[1] * _tmp30) / _tmp9)) - (_tmp22 / _tmp9)) - ((m * _tmp23) / _tmp9)) - (_tmp33 / _tmp9)) - ((m * _tmp33) / _tmp9)) - ((_tmp5 * (atoms[0] * _tmp34)) / _tmp9)) - ((_tmp5 * (atoms[1] * _tmp34)) / _tmp9)) - ((_tmp5 * (atoms[1] * _tmp35)) / _tmp9)) - ((m * (atoms[0] * _tmp37)) / _tmp9)) - ((m * (atoms[1] * _tmp37)) / _tmp9)) - ((m * (atoms[0] * (H1 * (E * (_tmp4 * (Ca * _tmp38)))))) / _tmp9)) - ((_tmp5 * (atoms[0] * (H1 * (E * (_tmp4 * (Ca * (_tmp0 * Scalar(5.0)))))))) / _tmp9);
+  const Scalar _tmp0 = Cx * Cx;
+  const Scalar _tmp1 = Ca * Ca;
+  const Scalar _tmp2 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
+  const Scalar _tmp3 = _tmp2 * Scalar(4.0);
+  const Scalar _tmp4 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp5 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp6 = b1 * (D * ((_tmp4 * _tmp4) * (_tmp5 * _tmp5)));
+  const Scalar _tmp7 = _tmp2 * Scalar(3.0);
+  const Scalar _tmp8 = atoms[0] * (H1 * (E * (_tmp0 * _tmp7)));
+  const Scalar _tmp9 = m * m;
+  const Scalar _tmp10 = _tmp1 * _tmp7;
+  const Scalar _tmp11 = _tmp2 * Scalar(2.0);
+  const Scalar _tmp12 = Ca * _tmp11;
+  const Scalar _tmp13 = H1 * (E * _tmp12);
+  const Scalar _tmp14 = m * _tmp9;
+  const Scalar _tmp15 = _tmp1 * _tmp11;
+  const Scalar _tmp16 = Ca * _tmp2;
+  const Scalar _tmp17 = H1 * (E * _tmp16);
+  const Scalar _tmp18 = atoms[1] * _tmp17;
+  const Scalar _tmp19 = atoms[0] * _tmp17;
+  const Scalar _tmp20 = Cx * _tmp0;
+  const Scalar _tmp21 = atoms[0] * (H1 * (E * (_tmp2 * _tmp20)));
+  const Scalar _tmp22 = atoms[0] * (H1 * (E * (_tmp2 * _tmp0)));
+  const Scalar _tmp23 = _tmp2 * _tmp1;
+  const Scalar _tmp24 = H1 * (E * _tmp23);
+  const Scalar _tmp25 = atoms[1] * _tmp24;
+  const Scalar _tmp26 = atoms[2] * (Sx * _tmp24);
+  const Scalar _tmp27 = H1 * (E * (Cx * _tmp23));
+  const Scalar _tmp28 = atoms[2] * (Sx * _tmp27);
+  const Scalar _tmp29 = atoms[1] * (H1 * (E * (_tmp23 * _tmp20)));
+  const Scalar _tmp30 = H1 * (E * (_tmp0 * _tmp23));
+  const Scalar _tmp31 = atoms[0] * _tmp30;
+  const Scalar _tmp32 = atoms[0] * _tmp24;
+  const Scalar _tmp33 = H1 * (E * (_tmp0 * _tmp16));
+  const Scalar _tmp34 = atoms[1] * _tmp33;
+  const Scalar _tmp35 = H1 * (E * (_tmp20 * _tmp16));
+  const Scalar _tmp36 = atoms[0] * _tmp35;
+  const Scalar _tmp37 = atoms[1] * _tmp35;
+  const Scalar _tmp38 = H1 * (E * (Cx * _tmp16));
+  const Scalar _tmp39 = atoms[1] * (H1 * (E * (_tmp0 * _tmp12)));
+  const Scalar _tmp40 = H1 * (E * (Cx * _tmp12));
+  const Scalar _tmp41 = H1 * (E * (Cx * (Ca * _tmp7)));
+  return ((((((((((((((((((((((((((((((m * (atoms[1] * (H1 * (E * (_tmp0 * (_tmp1 * _tmp3)))))) / _tmp6) + (((m * (atoms[0] * (H1 * (E * (Cx * _tmp7))))) / _tmp6) + (((m * _tmp8) / _tmp6) + (((_tmp9 * _tmp8) / _tmp6) + (((m * (atoms[1] * (H1 * (E * (Cx * _tmp10))))) / _tmp6) + (((_tmp9 * (atoms[1] * (H1 * (E * (_tmp0 * _tmp10))))) / _tmp6) + (((_tmp9 * (atoms[0] * (H1 * (E * (Cx * _tmp11))))) / _tmp6) + (((_tmp9 * (atoms[0] * _tmp13)) / _tmp6) + (((_tmp14 * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp6) + (((_tmp9 * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp6) + (((atoms[0] * (H1 * (E * (Cx * _tmp2)))) / _tmp6) + ((_tmp18 / _tmp6) + (((m * _tmp19) / _tmp6) + (((_tmp14 * _tmp21) / _tmp6) + (((_tmp9 * _tmp21) / _tmp6) + ((_tmp22 / _tmp6) + (((_tmp14 * _tmp22) / _tmp6) + ((_tmp25 / _tmp6) + (((m * _tmp26) / _tmp6) + (((atoms[1] * _tmp27) / _tmp6) + (((m * _tmp28) / _tmp6) + (((_tmp9 * _tmp26) / _tmp6) + (((_tmp9 * _tmp28) / _tmp6) + (((_tmp14 * _tmp29) / _tmp6) + (((_tmp9 * _tmp29) / _tmp6) + (((_tmp9 * _tmp31) / _tmp6) + ((_tmp31 * _tmp14) / _tmp6))))))))))))))))))))))))))) - ((_tmp14 * (_tmp30 * atoms[1])) / _tmp6)) - ((_tmp9 * _tmp32) / _tmp6)) - ((_tmp14 * _tmp28) / _tmp6)) - ((_tmp14 * _tmp26) / _tmp6)) - ((_tmp14 * _tmp32) / _tmp6)) - (_tmp28 / _tmp6)) - (_tmp26 / _tmp6)) - ((m * _tmp25) / _tmp6)) - ((_tmp9 * _tmp34) / _tmp6)) - ((_tmp14 * (atoms[0] * _tmp33)) / _tmp6)) - ((_tmp14 * _tmp34) / _tmp6)) - ((_tmp9 * _tmp36) / _tmp6)) - ((_tmp9 * _tmp37) / _tmp6)) - ((_tmp14 * _tmp36) / _tmp6)) - ((_tmp14 * _tmp37) / _tmp6)) - ((atoms[0] * _tmp38) / _tmp6)) - ((atoms[1] * _tmp38) / _tmp6)) - (_tmp19 / _tmp6)) - ((m * _tmp18) / _tmp6)) - (_tmp39 / _tmp6)) - ((m * _tmp39) / _tmp6)) - ((_tmp9 * (atoms[0] * _tmp40)) / _tmp6)) - ((_tmp9 * (atoms[1] * _tmp40)) / _tmp6)) - ((_tmp9 * (atoms[1] * _tmp13)) / _tmp6)) - ((m * (atoms[0] * _tmp41)) / _tmp6)) - ((m * (atoms[1] * _tmp41)) / _tmp6)) - ((m * (atoms[0] * (H1 * (E * (_tmp0 * (Ca * _tmp3)))))) / _tmp6)) - ((_tmp9 * (atoms[0] * (H1 * (E * (_tmp0 * (Ca * (_tmp2 * Scalar(5.0)))))))) / _tmp6);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_edge, at the point's Cauchy argument y.
@@ -466,12 +466,12 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_cauchy(cons
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_edge_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
-  out[0] = wavecontact::two_factor_edge_moment<Scalar>(0, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  out[1] = wavecontact::two_factor_edge_moment<Scalar>(1, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
-  const Scalar _tmp2 = Scalar(1.0) - (Ca * m);
-  out[2] = wavecontact::two_factor_edge_moment<Scalar>(2, 2, y, one_plus_y, -((Ca * (Scalar(1.0) - m)) / _tmp2), (Scalar(1.0) - Ca) / _tmp2);
+  const Scalar _tmp0 = (Ca * m) - Scalar(1.0);
+  out[0] = wavecontact::two_factor_edge_moment<Scalar>(0, 2, y, one_plus_y, -((Ca * (m - Scalar(1.0))) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
+  const Scalar _tmp1 = (Ca * m) - Scalar(1.0);
+  out[1] = wavecontact::two_factor_edge_moment<Scalar>(1, 2, y, one_plus_y, -((Ca * (m - Scalar(1.0))) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  out[2] = wavecontact::two_factor_edge_moment<Scalar>(2, 2, y, one_plus_y, -((Ca * (m - Scalar(1.0))) / _tmp2), (Ca - Scalar(1.0)) / _tmp2);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_edge_atoms_outputs = 3;
 
@@ -481,28 +481,28 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_edge(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  const Scalar _tmp2 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp3 = Cx * Cx;
-  const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = m * _tmp4;
-  const Scalar _tmp6 = atoms[0] * (H1 * (E * (_tmp0 * _tmp3)));
-  const Scalar _tmp7 = b1 * (D * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2)));
-  const Scalar _tmp8 = Cx * _tmp3;
-  const Scalar _tmp9 = atoms[0] * (H1 * (E * (_tmp0 * _tmp8)));
-  const Scalar _tmp10 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp11 = _tmp0 * Scalar(3.0);
-  const Scalar _tmp12 = atoms[0] * (H1 * (E * (_tmp3 * _tmp11)));
-  const Scalar _tmp13 = Ca * _tmp0;
-  const Scalar _tmp14 = atoms[1] * (H1 * (E * (_tmp3 * _tmp13)));
-  const Scalar _tmp15 = atoms[1] * (H1 * (E * (_tmp8 * _tmp13)));
-  const Scalar _tmp16 = atoms[1] * (H1 * (E * _tmp13));
-  const Scalar _tmp17 = Ca * _tmp10;
-  const Scalar _tmp18 = atoms[1] * (H1 * (E * (_tmp3 * _tmp17)));
+  const Scalar _tmp1 = _tmp0 * Scalar(3.0);
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp4 = b1 * (D * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
+  const Scalar _tmp5 = Cx * Cx;
+  const Scalar _tmp6 = atoms[0] * (H1 * (E * (_tmp5 * _tmp1)));
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp9 = m * _tmp7;
+  const Scalar _tmp10 = Cx * _tmp5;
+  const Scalar _tmp11 = atoms[0] * (H1 * (E * (_tmp0 * _tmp10)));
+  const Scalar _tmp12 = atoms[0] * (H1 * (E * (_tmp0 * _tmp5)));
+  const Scalar _tmp13 = Ca * _tmp8;
+  const Scalar _tmp14 = atoms[1] * (H1 * (E * (_tmp5 * _tmp13)));
+  const Scalar _tmp15 = Ca * _tmp0;
+  const Scalar _tmp16 = atoms[1] * (H1 * (E * _tmp15));
+  const Scalar _tmp17 = atoms[1] * (H1 * (E * (_tmp10 * _tmp15)));
+  const Scalar _tmp18 = atoms[1] * (H1 * (E * (_tmp5 * _tmp15)));
   const Scalar _tmp19 = _tmp0 * (Ca * Ca);
-  const Scalar _tmp20 = atoms[2] * (Sx * (H1 * (E * (Cx * _tmp19))));
-  const Scalar _tmp21 = atoms[2] * (Sx * (H1 * (E * _tmp19)));
-  return (Sa * (((((m * (atoms[0] * (H1 * (E * (Cx * _tmp11))))) / _tmp7) + (((m * _tmp12) / _tmp7) + (((_tmp4 * _tmp12) / _tmp7) + (((_tmp4 * (atoms[0] * (H1 * (E * (Cx * _tmp10))))) / _tmp7) + (((atoms[0] * (H1 * (E * (Cx * _tmp0)))) / _tmp7) + (((_tmp5 * _tmp9) / _tmp7) + (((_tmp4 * _tmp9) / _tmp7) + (((_tmp5 * _tmp6) / _tmp7) + (_tmp6 / _tmp7))))))))) * Sa) + ((((m * (atoms[1] * (H1 * (E * (Cx * (Ca * _tmp11)))))) / _tmp7) + (((_tmp4 * (atoms[1] * (H1 * (E * _tmp17)))) / _tmp7) + (((_tmp4 * (atoms[1] * (H1 * (E * (Cx * _tmp17))))) / _tmp7) + (((m * _tmp18) / _tmp7) + ((_tmp18 / _tmp7) + (((m * _tmp16) / _tmp7) + (((atoms[1] * (H1 * (E * (Cx * _tmp13)))) / _tmp7) + (((_tmp5 * _tmp15) / _tmp7) + (((_tmp4 * _tmp15) / _tmp7) + (((_tmp4 * _tmp14) / _tmp7) + ((_tmp5 * _tmp14) / _tmp7))))))))))) - (_tmp16 / _tmp7)))) + (((((((m * _tmp21) / _tmp7) + (((m * _tmp20) / _tmp7) + (((_tmp4 * _tmp20) / _tmp7) + ((_tmp4 * _tmp21) / _tmp7)))) - ((_tmp5 * _tmp20) / _tmp7)) - ((_tmp5 * _tmp21) / _tmp7)) - (_tmp20 / _tmp7)) - (_tmp21 / _tmp7));
+  const Scalar _tmp20 = atoms[2] * (Sx * (H1 * (E * _tmp19)));
+  const Scalar _tmp21 = atoms[2] * (Sx * (H1 * (E * (Cx * _tmp19))));
+  return (Sa * (((((m * (atoms[0] * (H1 * (E * (Cx * _tmp1))))) / _tmp4) + (((m * _tmp6) / _tmp4) + (((_tmp7 * _tmp6) / _tmp4) + (((_tmp7 * (atoms[0] * (H1 * (E * (Cx * _tmp8))))) / _tmp4) + (((atoms[0] * (H1 * (E * (Cx * _tmp0)))) / _tmp4) + (((_tmp9 * _tmp11) / _tmp4) + (((_tmp7 * _tmp11) / _tmp4) + (((_tmp9 * _tmp12) / _tmp4) + (_tmp12 / _tmp4))))))))) * Sa) + ((((m * (atoms[1] * (H1 * (E * (Cx * (Ca * _tmp1)))))) / _tmp4) + (((_tmp7 * (atoms[1] * (H1 * (E * _tmp13)))) / _tmp4) + (((_tmp7 * (atoms[1] * (H1 * (E * (Cx * _tmp13))))) / _tmp4) + (((m * _tmp14) / _tmp4) + ((_tmp14 / _tmp4) + (((m * _tmp16) / _tmp4) + (((atoms[1] * (H1 * (E * (Cx * _tmp15)))) / _tmp4) + (((_tmp9 * _tmp17) / _tmp4) + (((_tmp7 * _tmp17) / _tmp4) + (((_tmp7 * _tmp18) / _tmp4) + ((_tmp9 * _tmp18) / _tmp4))))))))))) - (_tmp16 / _tmp4)))) + (((((((m * _tmp20) / _tmp4) + (((m * _tmp21) / _tmp4) + (((_tmp7 * _tmp21) / _tmp4) + ((_tmp7 * _tmp20) / _tmp4)))) - ((_tmp9 * _tmp21) / _tmp4)) - ((_tmp9 * _tmp20) / _tmp4)) - (_tmp21 / _tmp4)) - (_tmp20 / _tmp4));
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_other, of the zone.
@@ -510,10 +510,10 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_cauchy_edge
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_top_other_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
-  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+  const Scalar _tmp0 = (Ca * m) - Scalar(1.0);
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
+  const Scalar _tmp1 = (Ca * m) - Scalar(1.0);
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_other_atoms_outputs = 2;
 
@@ -523,22 +523,22 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp3 = Cx * Cx;
-  const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = atoms[0] * (H1 * (E * (_tmp0 * _tmp3)));
-  const Scalar _tmp6 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp7 = m * _tmp4;
-  const Scalar _tmp8 = Ca * _tmp0;
-  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp8)));
-  const Scalar _tmp10 = H1 * (E * _tmp8);
-  const Scalar _tmp11 = atoms[0] * _tmp10;
-  const Scalar _tmp12 = atoms[1] * _tmp10;
-  const Scalar _tmp13 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
-  const Scalar _tmp14 = atoms[0] * (H1 * (_tmp0 * E));
-  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp3 * _tmp8)));
-  return (((((((((((_tmp14 / _tmp6) + ((_tmp13 / _tmp6) + (((m * _tmp12) / _tmp6) + (((m * _tmp9) / _tmp6) + (((_tmp7 * _tmp13) / _tmp6) + (((_tmp7 * _tmp11) / _tmp6) + (((_tmp4 * _tmp12) / _tmp6) + (((_tmp4 * _tmp11) / _tmp6) + (((_tmp4 * _tmp9) / _tmp6) + (((_tmp4 * _tmp5) / _tmp6) + ((_tmp5 * _tmp7) / _tmp6))))))))))) - ((_tmp4 * _tmp15) / _tmp6)) - ((_tmp7 * _tmp15) / _tmp6)) - ((_tmp4 * _tmp13) / _tmp6)) - ((_tmp7 * _tmp9) / _tmp6)) - ((_tmp7 * _tmp12) / _tmp6)) - (_tmp9 / _tmp6)) - (_tmp12 / _tmp6)) - ((m * _tmp13) / _tmp6)) - ((m * _tmp14) / _tmp6)) - ((_tmp4 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp6);
+  const Scalar _tmp1 = atoms[0] * (H1 * (_tmp0 * E));
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
+  const Scalar _tmp5 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
+  const Scalar _tmp6 = Ca * _tmp0;
+  const Scalar _tmp7 = H1 * (E * _tmp6);
+  const Scalar _tmp8 = atoms[1] * _tmp7;
+  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
+  const Scalar _tmp10 = m * m;
+  const Scalar _tmp11 = m * _tmp10;
+  const Scalar _tmp12 = atoms[0] * _tmp7;
+  const Scalar _tmp13 = Cx * Cx;
+  const Scalar _tmp14 = atoms[0] * (H1 * (E * (_tmp0 * _tmp13)));
+  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp13 * _tmp6)));
+  return (((((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + (((m * _tmp8) / _tmp4) + (((m * _tmp9) / _tmp4) + (((_tmp11 * _tmp5) / _tmp4) + (((_tmp11 * _tmp12) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp10 * _tmp12) / _tmp4) + (((_tmp10 * _tmp9) / _tmp4) + (((_tmp10 * _tmp14) / _tmp4) + ((_tmp14 * _tmp11) / _tmp4))))))))))) - ((_tmp10 * _tmp15) / _tmp4)) - ((_tmp11 * _tmp15) / _tmp4)) - ((_tmp10 * _tmp5) / _tmp4)) - ((_tmp11 * _tmp9) / _tmp4)) - ((_tmp11 * _tmp8) / _tmp4)) - (_tmp9 / _tmp4)) - (_tmp8 / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp10 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp4);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_other_edge, of the zone.
@@ -546,10 +546,10 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other(const Scala
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_top_other_edge_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
-  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+  const Scalar _tmp0 = (Ca * m) - Scalar(1.0);
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
+  const Scalar _tmp1 = (Ca * m) - Scalar(1.0);
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_top_other_edge_atoms_outputs = 2;
 
@@ -559,18 +559,18 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_edge(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp3 = m * m;
-  const Scalar _tmp4 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp5 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp6 = m * _tmp3;
-  const Scalar _tmp7 = Ca * _tmp0;
-  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp7)));
-  const Scalar _tmp9 = atoms[1] * (H1 * (E * _tmp7));
-  const Scalar _tmp10 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
-  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
-  return (((((((((_tmp11 / _tmp5) + ((_tmp10 / _tmp5) + ((_tmp9 / _tmp5) + ((_tmp8 / _tmp5) + (((_tmp6 * _tmp10) / _tmp5) + (((_tmp6 * _tmp9) / _tmp5) + (((_tmp6 * _tmp8) / _tmp5) + (((_tmp3 * _tmp4) / _tmp5) + ((_tmp4 * _tmp6) / _tmp5))))))))) - ((_tmp3 * _tmp8) / _tmp5)) - ((_tmp3 * _tmp9) / _tmp5)) - ((_tmp3 * _tmp10) / _tmp5)) - ((m * _tmp8) / _tmp5)) - ((m * _tmp9) / _tmp5)) - ((m * _tmp10) / _tmp5)) - ((m * _tmp11) / _tmp5)) - ((_tmp3 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp5);
+  const Scalar _tmp1 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
+  const Scalar _tmp5 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
+  const Scalar _tmp6 = Ca * _tmp0;
+  const Scalar _tmp7 = atoms[1] * (H1 * (E * _tmp6));
+  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
+  const Scalar _tmp9 = m * m;
+  const Scalar _tmp10 = m * _tmp9;
+  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  return (((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + ((_tmp7 / _tmp4) + ((_tmp8 / _tmp4) + (((_tmp10 * _tmp5) / _tmp4) + (((_tmp10 * _tmp7) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp9 * _tmp11) / _tmp4) + ((_tmp11 * _tmp10) / _tmp4))))))))) - ((_tmp9 * _tmp8) / _tmp4)) - ((_tmp9 * _tmp7) / _tmp4)) - ((_tmp9 * _tmp5) / _tmp4)) - ((m * _tmp8) / _tmp4)) - ((m * _tmp7) / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp9 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp4);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_top_jump, at the point's Cauchy argument y.
@@ -589,7 +589,7 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_jump(const Scalar
   using std::sqrt;
   const Scalar _tmp0 = Scalar(1.0) + Cx;
   const Scalar _tmp1 = Cx * m;
-  const Scalar _tmp2 = Scalar(1.0) - _tmp1;
+  const Scalar _tmp2 = _tmp1 - Scalar(1.0);
   const Scalar _tmp3 = Scalar(1.0) + _tmp1;
   return (m * (atoms[0] * (Sx * (H1 * (E * (Cx * ((Scalar(1.0) + m) * (_tmp0 * (sqrt(-((Ca * D) / _tmp0)) * Scalar(4.0)))))))))) / (b1 * (D * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3))));
 }
@@ -607,7 +607,7 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_own_argument(cons
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_argument(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/) {
   using std::sqrt;
-  return -((Ca * (Scalar(1.0) - m)) / (Scalar(1.0) - (Ca * m)));
+  return -((Ca * (m - Scalar(1.0))) / ((Ca * m) - Scalar(1.0)));
 }
 
 // Contact pressure p(x) on the flank (beyond the branch point) of a zone reaching beyond the branch point: eq. 12
@@ -627,10 +627,10 @@ inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_cauchy_a
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_flank_own_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
-  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+  const Scalar _tmp0 = (Ca * m) - Scalar(1.0);
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
+  const Scalar _tmp1 = (Ca * m) - Scalar(1.0);
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_own_atoms_outputs = 2;
 
@@ -640,22 +640,22 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_own(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp3 = Cx * Cx;
-  const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = atoms[0] * (H1 * (E * (_tmp0 * _tmp3)));
-  const Scalar _tmp6 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp7 = m * _tmp4;
-  const Scalar _tmp8 = Ca * _tmp0;
-  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp8)));
-  const Scalar _tmp10 = H1 * (E * _tmp8);
-  const Scalar _tmp11 = atoms[0] * _tmp10;
-  const Scalar _tmp12 = atoms[1] * _tmp10;
-  const Scalar _tmp13 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
-  const Scalar _tmp14 = atoms[0] * (H1 * (_tmp0 * E));
-  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp3 * _tmp8)));
-  return (((((((((((_tmp14 / _tmp6) + ((_tmp13 / _tmp6) + (((m * _tmp12) / _tmp6) + (((m * _tmp9) / _tmp6) + (((_tmp7 * _tmp13) / _tmp6) + (((_tmp7 * _tmp11) / _tmp6) + (((_tmp4 * _tmp12) / _tmp6) + (((_tmp4 * _tmp11) / _tmp6) + (((_tmp4 * _tmp9) / _tmp6) + (((_tmp4 * _tmp5) / _tmp6) + ((_tmp5 * _tmp7) / _tmp6))))))))))) - ((_tmp4 * _tmp15) / _tmp6)) - ((_tmp7 * _tmp15) / _tmp6)) - ((_tmp4 * _tmp13) / _tmp6)) - ((_tmp7 * _tmp9) / _tmp6)) - ((_tmp7 * _tmp12) / _tmp6)) - (_tmp9 / _tmp6)) - (_tmp12 / _tmp6)) - ((m * _tmp13) / _tmp6)) - ((m * _tmp14) / _tmp6)) - ((_tmp4 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp6);
+  const Scalar _tmp1 = atoms[0] * (H1 * (_tmp0 * E));
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
+  const Scalar _tmp5 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
+  const Scalar _tmp6 = Ca * _tmp0;
+  const Scalar _tmp7 = H1 * (E * _tmp6);
+  const Scalar _tmp8 = atoms[1] * _tmp7;
+  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
+  const Scalar _tmp10 = m * m;
+  const Scalar _tmp11 = m * _tmp10;
+  const Scalar _tmp12 = atoms[0] * _tmp7;
+  const Scalar _tmp13 = Cx * Cx;
+  const Scalar _tmp14 = atoms[0] * (H1 * (E * (_tmp0 * _tmp13)));
+  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp13 * _tmp6)));
+  return (((((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + (((m * _tmp8) / _tmp4) + (((m * _tmp9) / _tmp4) + (((_tmp11 * _tmp5) / _tmp4) + (((_tmp11 * _tmp12) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp10 * _tmp12) / _tmp4) + (((_tmp10 * _tmp9) / _tmp4) + (((_tmp10 * _tmp14) / _tmp4) + ((_tmp14 * _tmp11) / _tmp4))))))))))) - ((_tmp10 * _tmp15) / _tmp4)) - ((_tmp11 * _tmp15) / _tmp4)) - ((_tmp10 * _tmp5) / _tmp4)) - ((_tmp11 * _tmp9) / _tmp4)) - ((_tmp11 * _tmp8) / _tmp4)) - (_tmp9 / _tmp4)) - (_tmp8 / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp10 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp4);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_flank_own_edge, of the zone.
@@ -663,10 +663,10 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_own(const Scala
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_flank_own_edge_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
-  const Scalar _tmp0 = Scalar(1.0) - (Ca * m);
-  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) - m)) / _tmp0), (Scalar(1.0) - Ca) / _tmp0);
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Ca * (Scalar(1.0) - m)) / _tmp1), (Scalar(1.0) - Ca) / _tmp1);
+  const Scalar _tmp0 = (Ca * m) - Scalar(1.0);
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
+  const Scalar _tmp1 = (Ca * m) - Scalar(1.0);
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_own_edge_atoms_outputs = 2;
 
@@ -676,31 +676,31 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_own_edge(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
-  const Scalar _tmp1 = Scalar(1.0) - (Ca * m);
-  const Scalar _tmp2 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp3 = m * m;
-  const Scalar _tmp4 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp5 = b1 * ((_tmp1 * _tmp1) * (_tmp2 * _tmp2));
-  const Scalar _tmp6 = m * _tmp3;
-  const Scalar _tmp7 = Ca * _tmp0;
-  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp7)));
-  const Scalar _tmp9 = atoms[1] * (H1 * (E * _tmp7));
-  const Scalar _tmp10 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
-  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
-  return (((((((((_tmp11 / _tmp5) + ((_tmp10 / _tmp5) + ((_tmp9 / _tmp5) + ((_tmp8 / _tmp5) + (((_tmp6 * _tmp10) / _tmp5) + (((_tmp6 * _tmp9) / _tmp5) + (((_tmp6 * _tmp8) / _tmp5) + (((_tmp3 * _tmp4) / _tmp5) + ((_tmp4 * _tmp6) / _tmp5))))))))) - ((_tmp3 * _tmp8) / _tmp5)) - ((_tmp3 * _tmp9) / _tmp5)) - ((_tmp3 * _tmp10) / _tmp5)) - ((m * _tmp8) / _tmp5)) - ((m * _tmp9) / _tmp5)) - ((m * _tmp10) / _tmp5)) - ((m * _tmp11) / _tmp5)) - ((_tmp3 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp5);
+  const Scalar _tmp1 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
+  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
+  const Scalar _tmp5 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
+  const Scalar _tmp6 = Ca * _tmp0;
+  const Scalar _tmp7 = atoms[1] * (H1 * (E * _tmp6));
+  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
+  const Scalar _tmp9 = m * m;
+  const Scalar _tmp10 = m * _tmp9;
+  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  return (((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + ((_tmp7 / _tmp4) + ((_tmp8 / _tmp4) + (((_tmp10 * _tmp5) / _tmp4) + (((_tmp10 * _tmp7) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp9 * _tmp11) / _tmp4) + ((_tmp11 * _tmp10) / _tmp4))))))))) - ((_tmp9 * _tmp8) / _tmp4)) - ((_tmp9 * _tmp7) / _tmp4)) - ((_tmp9 * _tmp5) / _tmp4)) - ((m * _tmp8) / _tmp4)) - ((m * _tmp7) / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp9 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp4);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy, at the point's Cauchy argument y.
-// Total ops: 30 (9 add, 6 mul, 6 div, 0 sqrt, 6 neg, 3 moment calls), 3 temporaries
+// Total ops: 27 (9 add, 6 mul, 6 div, 0 sqrt, 3 neg, 3 moment calls), 3 temporaries
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
   using std::sqrt;
   const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
-  out[0] = wavecontact::two_factor_moment<Scalar>(0, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  out[0] = wavecontact::two_factor_moment<Scalar>(0, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
   const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
-  out[1] = wavecontact::two_factor_moment<Scalar>(1, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  out[1] = wavecontact::two_factor_moment<Scalar>(1, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
   const Scalar _tmp2 = (Scalar(1.0) + m) * Ca;
-  out[2] = wavecontact::two_factor_moment<Scalar>(2, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp2), -((Scalar(1.0) - Ca) / _tmp2));
+  out[2] = wavecontact::two_factor_moment<Scalar>(2, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp2), (Ca - Scalar(1.0)) / _tmp2);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy_atoms_outputs = 3;
 
@@ -710,54 +710,54 @@ inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_other_ca
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = Cx * Cx;
-  const Scalar _tmp4 = m * m;
-  const Scalar _tmp5 = H1 * (E * (_tmp0 * _tmp3));
-  const Scalar _tmp6 = _tmp4 * (atoms[1] * _tmp5);
-  const Scalar _tmp7 = _tmp2 * (Scalar(1.0) + m);
-  const Scalar _tmp8 = b1 * (Sx * (Ca * _tmp7));
-  const Scalar _tmp9 = _tmp5 * atoms[2];
-  const Scalar _tmp10 = _tmp4 * _tmp9;
-  const Scalar _tmp11 = H1 * (E * (_tmp0 * (Cx * _tmp3)));
-  const Scalar _tmp12 = _tmp4 * (atoms[1] * _tmp11);
-  const Scalar _tmp13 = _tmp4 * (atoms[2] * _tmp11);
-  const Scalar _tmp14 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp15 = atoms[1] * _tmp14;
-  const Scalar _tmp16 = atoms[2] * _tmp14;
-  const Scalar _tmp17 = H1 * (_tmp0 * E);
-  const Scalar _tmp18 = atoms[2] * _tmp17;
-  const Scalar _tmp19 = b1 * (Sx * _tmp7);
-  const Scalar _tmp20 = _tmp14 * atoms[0];
-  const Scalar _tmp21 = _tmp2 * b1;
-  const Scalar _tmp22 = _tmp17 * atoms[0];
-  const Scalar _tmp23 = atoms[1] * _tmp17;
-  const Scalar _tmp24 = b1 * (Sx * (_tmp7 * (Ca * Ca)));
-  const Scalar _tmp25 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp26 = H1 * (E * (Cx * _tmp25));
-  const Scalar _tmp27 = m * (atoms[1] * _tmp26);
-  const Scalar _tmp28 = m * (atoms[2] * _tmp26);
-  const Scalar _tmp29 = H1 * (E * _tmp25);
-  const Scalar _tmp30 = atoms[1] * _tmp29;
-  const Scalar _tmp31 = m * _tmp30;
-  const Scalar _tmp32 = H1 * (E * (_tmp3 * (_tmp0 * Scalar(4.0))));
-  const Scalar _tmp33 = H1 * (E * (_tmp3 * _tmp25));
-  return (((((((((((((((((m * (atoms[1] * _tmp32)) / _tmp19) + ((_tmp27 / _tmp19) + ((_tmp28 / _tmp24) + (((m * (atoms[2] * _tmp33)) / _tmp24) + (((m * (atoms[2] * _tmp29)) / _tmp8) + (((atoms[1] * _tmp33) / _tmp8) + (((m * _tmp22) / _tmp21) + ((_tmp22 / _tmp21) + (((m * _tmp20) / _tmp21) + ((_tmp20 / _tmp21) + (((_tmp4 * _tmp18) / _tmp19) + ((_tmp6 / _tmp19) + ((_tmp18 / _tmp8) + ((_tmp16 / _tmp8) + ((_tmp15 / _tmp8) + ((_tmp13 / _tmp8) + ((_tmp12 / _tmp8) + ((_tmp6 / _tmp8) + (_tmp10 / _tmp8))))))))))))))))))) - (_tmp23 / _tmp8)) - (_tmp10 / _tmp24)) - (_tmp9 / _tmp24)) - (_tmp13 / _tmp24)) - (_tmp16 / _tmp24)) - (_tmp10 / _tmp19)) - (_tmp12 / _tmp19)) - (_tmp15 / _tmp19)) - (_tmp23 / _tmp19)) - (_tmp27 / _tmp8)) - (_tmp28 / _tmp8)) - (_tmp31 / _tmp8)) - ((_tmp4 * _tmp30) / _tmp19)) - (_tmp31 / _tmp19)) - ((m * (atoms[2] * _tmp32)) / _tmp8);
+  const Scalar _tmp0 = Cx * Cx;
+  const Scalar _tmp1 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
+  const Scalar _tmp2 = H1 * (E * (_tmp0 * (_tmp1 * Scalar(4.0))));
+  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp4 = _tmp3 * _tmp3;
+  const Scalar _tmp5 = _tmp4 * (Scalar(1.0) + m);
+  const Scalar _tmp6 = b1 * (Sx * _tmp5);
+  const Scalar _tmp7 = _tmp1 * Scalar(2.0);
+  const Scalar _tmp8 = H1 * (E * (Cx * _tmp7));
+  const Scalar _tmp9 = m * (atoms[1] * _tmp8);
+  const Scalar _tmp10 = m * (atoms[2] * _tmp8);
+  const Scalar _tmp11 = b1 * (Sx * (_tmp5 * (Ca * Ca)));
+  const Scalar _tmp12 = H1 * (E * (_tmp0 * _tmp7));
+  const Scalar _tmp13 = H1 * (E * _tmp7);
+  const Scalar _tmp14 = b1 * (Sx * (Ca * _tmp5));
+  const Scalar _tmp15 = H1 * (_tmp1 * E);
+  const Scalar _tmp16 = _tmp15 * atoms[0];
+  const Scalar _tmp17 = _tmp4 * b1;
+  const Scalar _tmp18 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp19 = _tmp18 * atoms[0];
+  const Scalar _tmp20 = m * m;
+  const Scalar _tmp21 = atoms[2] * _tmp15;
+  const Scalar _tmp22 = H1 * (E * (_tmp1 * _tmp0));
+  const Scalar _tmp23 = _tmp20 * (atoms[1] * _tmp22);
+  const Scalar _tmp24 = atoms[2] * _tmp18;
+  const Scalar _tmp25 = atoms[1] * _tmp18;
+  const Scalar _tmp26 = H1 * (E * (_tmp1 * (Cx * _tmp0)));
+  const Scalar _tmp27 = _tmp20 * (atoms[2] * _tmp26);
+  const Scalar _tmp28 = _tmp20 * (atoms[1] * _tmp26);
+  const Scalar _tmp29 = _tmp22 * atoms[2];
+  const Scalar _tmp30 = _tmp20 * _tmp29;
+  const Scalar _tmp31 = atoms[1] * _tmp15;
+  const Scalar _tmp32 = atoms[1] * _tmp13;
+  const Scalar _tmp33 = m * _tmp32;
+  return (((((((((((((((((m * (atoms[1] * _tmp2)) / _tmp6) + ((_tmp9 / _tmp6) + ((_tmp10 / _tmp11) + (((m * (atoms[2] * _tmp12)) / _tmp11) + (((m * (atoms[2] * _tmp13)) / _tmp14) + (((atoms[1] * _tmp12) / _tmp14) + (((m * _tmp16) / _tmp17) + ((_tmp16 / _tmp17) + (((m * _tmp19) / _tmp17) + ((_tmp19 / _tmp17) + (((_tmp20 * _tmp21) / _tmp6) + ((_tmp23 / _tmp6) + ((_tmp21 / _tmp14) + ((_tmp24 / _tmp14) + ((_tmp25 / _tmp14) + ((_tmp27 / _tmp14) + ((_tmp28 / _tmp14) + ((_tmp23 / _tmp14) + (_tmp30 / _tmp14))))))))))))))))))) - (_tmp31 / _tmp14)) - (_tmp30 / _tmp11)) - (_tmp29 / _tmp11)) - (_tmp27 / _tmp11)) - (_tmp24 / _tmp11)) - (_tmp30 / _tmp6)) - (_tmp28 / _tmp6)) - (_tmp25 / _tmp6)) - (_tmp31 / _tmp6)) - (_tmp9 / _tmp14)) - (_tmp10 / _tmp14)) - (_tmp33 / _tmp14)) - ((_tmp20 * _tmp32) / _tmp6)) - (_tmp33 / _tmp6)) - ((m * (atoms[2] * _tmp2)) / _tmp14);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy_edge, at the point's Cauchy argument y.
-// Total ops: 30 (9 add, 6 mul, 6 div, 0 sqrt, 6 neg, 3 moment calls), 3 temporaries
+// Total ops: 27 (9 add, 6 mul, 6 div, 0 sqrt, 3 neg, 3 moment calls), 3 temporaries
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy_edge_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& y, const Scalar& one_plus_y, Scalar* out) {
   using std::sqrt;
   const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
-  out[0] = wavecontact::two_factor_edge_moment<Scalar>(0, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  out[0] = wavecontact::two_factor_edge_moment<Scalar>(0, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
   const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
-  out[1] = wavecontact::two_factor_edge_moment<Scalar>(1, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  out[1] = wavecontact::two_factor_edge_moment<Scalar>(1, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
   const Scalar _tmp2 = (Scalar(1.0) + m) * Ca;
-  out[2] = wavecontact::two_factor_edge_moment<Scalar>(2, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp2), -((Scalar(1.0) - Ca) / _tmp2));
+  out[2] = wavecontact::two_factor_edge_moment<Scalar>(2, 2, y, one_plus_y, -((Scalar(1.0) + (m * Ca)) / _tmp2), (Ca - Scalar(1.0)) / _tmp2);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy_edge_atoms_outputs = 3;
 
@@ -766,47 +766,47 @@ inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_other_ca
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_other_cauchy_edge(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) - (Cx * m);
-  const Scalar _tmp2 = Cx * Cx;
-  const Scalar _tmp3 = m * m;
-  const Scalar _tmp4 = H1 * (E * (_tmp0 * _tmp2));
-  const Scalar _tmp5 = atoms[0] * _tmp4;
-  const Scalar _tmp6 = (_tmp1 * _tmp1) * (Scalar(1.0) + m);
-  const Scalar _tmp7 = b1 * (Sx * ((Ca * Ca) * _tmp6));
-  const Scalar _tmp8 = Cx * _tmp2;
-  const Scalar _tmp9 = H1 * (E * (_tmp0 * _tmp8));
-  const Scalar _tmp10 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp11 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp12 = H1 * (E * (_tmp2 * _tmp11));
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp11));
-  const Scalar _tmp14 = b1 * (Sx * (Ca * _tmp6));
-  const Scalar _tmp15 = H1 * (_tmp0 * E);
-  const Scalar _tmp16 = H1 * (E * _tmp11);
-  const Scalar _tmp17 = _tmp0 * Scalar(4.0);
-  const Scalar _tmp18 = H1 * (E * (_tmp2 * _tmp17));
-  const Scalar _tmp19 = m * (atoms[1] * _tmp18);
-  const Scalar _tmp20 = _tmp13 * atoms[1];
-  const Scalar _tmp21 = _tmp12 * atoms[1];
-  const Scalar _tmp22 = _tmp4 * atoms[2];
-  const Scalar _tmp23 = _tmp3 * _tmp22;
-  const Scalar _tmp24 = _tmp3 * (_tmp9 * atoms[2]);
-  const Scalar _tmp25 = _tmp10 * atoms[2];
-  const Scalar _tmp26 = _tmp15 * atoms[2];
-  const Scalar _tmp27 = b1 * (Sx * _tmp6);
-  const Scalar _tmp28 = m * (_tmp13 * atoms[2]);
-  return (Sa * (((((((((m * (atoms[0] * _tmp12)) / _tmp7) + ((m * (atoms[0] * _tmp13)) / _tmp7)) - ((_tmp3 * _tmp5) / _tmp7)) - (_tmp5 / _tmp7)) - ((_tmp3 * (atoms[0] * _tmp9)) / _tmp7)) - ((atoms[0] * _tmp10) / _tmp7)) * Sa) + (((((((((_tmp19 / _tmp14) + ((_tmp20 / _tmp7) + (((_tmp3 * (atoms[1] * (H1 * (E * (_tmp8 * _tmp11))))) / _tmp7) + ((_tmp21 / _tmp7) + (((m * _tmp20) / _tmp14) + ((_tmp3 * _tmp21) / _tmp7)))))) - ((_tmp3 * (_tmp4 * atoms[1])) / _tmp14)) - ((_tmp3 * (_tmp9 * atoms[1])) / _tmp14)) - ((_tmp10 * atoms[1]) / _tmp14)) - ((atoms[1] * _tmp15) / _tmp14)) - ((m * (atoms[1] * _tmp16)) / _tmp14)) - (_tmp19 / _tmp7)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp17))))) / _tmp7)))) + (((((((((_tmp28 / _tmp7) + (((m * (_tmp12 * atoms[2])) / _tmp7) + (((m * (_tmp16 * atoms[2])) / _tmp14) + (((_tmp3 * _tmp26) / _tmp27) + ((_tmp26 / _tmp14) + ((_tmp25 / _tmp14) + ((_tmp23 / _tmp14) + (_tmp24 / _tmp14)))))))) - (_tmp23 / _tmp7)) - (_tmp22 / _tmp7)) - (_tmp24 / _tmp7)) - (_tmp25 / _tmp7)) - (_tmp23 / _tmp27)) - (_tmp28 / _tmp14)) - ((m * (_tmp18 * atoms[2])) / _tmp14));
+  const Scalar _tmp0 = Cx * Cx;
+  const Scalar _tmp1 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
+  const Scalar _tmp2 = _tmp1 * Scalar(2.0);
+  const Scalar _tmp3 = H1 * (E * (_tmp0 * _tmp2));
+  const Scalar _tmp4 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp5 = (_tmp4 * _tmp4) * (Scalar(1.0) + m);
+  const Scalar _tmp6 = b1 * (Sx * ((Ca * Ca) * _tmp5));
+  const Scalar _tmp7 = H1 * (E * (Cx * _tmp2));
+  const Scalar _tmp8 = m * m;
+  const Scalar _tmp9 = H1 * (E * (_tmp1 * _tmp0));
+  const Scalar _tmp10 = atoms[0] * _tmp9;
+  const Scalar _tmp11 = Cx * _tmp0;
+  const Scalar _tmp12 = H1 * (E * (_tmp1 * _tmp11));
+  const Scalar _tmp13 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp14 = _tmp1 * Scalar(4.0);
+  const Scalar _tmp15 = H1 * (E * (_tmp0 * _tmp14));
+  const Scalar _tmp16 = m * (atoms[1] * _tmp15);
+  const Scalar _tmp17 = b1 * (Sx * (Ca * _tmp5));
+  const Scalar _tmp18 = _tmp7 * atoms[1];
+  const Scalar _tmp19 = _tmp3 * atoms[1];
+  const Scalar _tmp20 = H1 * (_tmp1 * E);
+  const Scalar _tmp21 = H1 * (E * _tmp2);
+  const Scalar _tmp22 = m * (_tmp7 * atoms[2]);
+  const Scalar _tmp23 = _tmp20 * atoms[2];
+  const Scalar _tmp24 = b1 * (Sx * _tmp5);
+  const Scalar _tmp25 = _tmp13 * atoms[2];
+  const Scalar _tmp26 = _tmp9 * atoms[2];
+  const Scalar _tmp27 = _tmp8 * _tmp26;
+  const Scalar _tmp28 = _tmp8 * (_tmp12 * atoms[2]);
+  return (Sa * (((((((((m * (atoms[0] * _tmp3)) / _tmp6) + ((m * (atoms[0] * _tmp7)) / _tmp6)) - ((_tmp8 * _tmp10) / _tmp6)) - (_tmp10 / _tmp6)) - ((_tmp8 * (atoms[0] * _tmp12)) / _tmp6)) - ((atoms[0] * _tmp13) / _tmp6)) * Sa) + (((((((((_tmp16 / _tmp17) + ((_tmp18 / _tmp6) + (((_tmp8 * (atoms[1] * (H1 * (E * (_tmp11 * _tmp2))))) / _tmp6) + ((_tmp19 / _tmp6) + (((m * _tmp18) / _tmp17) + ((_tmp8 * _tmp19) / _tmp6)))))) - ((_tmp8 * (_tmp9 * atoms[1])) / _tmp17)) - ((_tmp8 * (_tmp12 * atoms[1])) / _tmp17)) - ((_tmp13 * atoms[1]) / _tmp17)) - ((atoms[1] * _tmp20) / _tmp17)) - ((m * (atoms[1] * _tmp21)) / _tmp17)) - (_tmp16 / _tmp6)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp14))))) / _tmp6)))) + (((((((((_tmp22 / _tmp6) + (((m * (_tmp3 * atoms[2])) / _tmp6) + (((m * (_tmp21 * atoms[2])) / _tmp17) + (((_tmp8 * _tmp23) / _tmp24) + ((_tmp23 / _tmp17) + ((_tmp25 / _tmp17) + ((_tmp27 / _tmp17) + (_tmp28 / _tmp17)))))))) - (_tmp27 / _tmp6)) - (_tmp26 / _tmp6)) - (_tmp28 / _tmp6)) - (_tmp25 / _tmp6)) - (_tmp27 / _tmp24)) - (_tmp22 / _tmp17)) - ((m * (_tmp15 * atoms[2])) / _tmp17));
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_flank_other, of the zone.
-// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_flank_other_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
   const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
-  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  out[0] = wavecontact::quadratic_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
   const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
-  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  out[1] = wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_other_atoms_outputs = 2;
 
@@ -816,33 +816,33 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_other(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = _tmp1 * _tmp1;
-  const Scalar _tmp3 = m * m;
-  const Scalar _tmp4 = _tmp3 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp5 = _tmp2 * (Scalar(1.0) + m);
-  const Scalar _tmp6 = b1 * _tmp5;
-  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp8 = atoms[0] * _tmp7;
-  const Scalar _tmp9 = _tmp2 * b1;
-  const Scalar _tmp10 = H1 * (_tmp0 * E);
-  const Scalar _tmp11 = atoms[0] * _tmp10;
-  const Scalar _tmp12 = b1 * (Ca * _tmp5);
-  const Scalar _tmp13 = atoms[1] * _tmp7;
-  const Scalar _tmp14 = atoms[1] * _tmp10;
+  const Scalar _tmp1 = H1 * (_tmp0 * E);
+  const Scalar _tmp2 = atoms[0] * _tmp1;
+  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp4 = _tmp3 * _tmp3;
+  const Scalar _tmp5 = _tmp4 * b1;
+  const Scalar _tmp6 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp7 = atoms[0] * _tmp6;
+  const Scalar _tmp8 = m * m;
+  const Scalar _tmp9 = _tmp8 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp10 = _tmp4 * (Scalar(1.0) + m);
+  const Scalar _tmp11 = b1 * _tmp10;
+  const Scalar _tmp12 = b1 * (Ca * _tmp10);
+  const Scalar _tmp13 = atoms[1] * _tmp6;
+  const Scalar _tmp14 = atoms[1] * _tmp1;
   const Scalar _tmp15 = _tmp0 * Scalar(2.0);
-  return (((((((((m * _tmp11) / _tmp9) + ((_tmp11 / _tmp9) + (((m * _tmp8) / _tmp9) + ((_tmp4 / _tmp6) + (_tmp8 / _tmp9))))) - (_tmp4 / _tmp12)) - ((_tmp3 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp3 * _tmp14) / _tmp6)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
+  return (((((((((m * _tmp2) / _tmp5) + ((_tmp2 / _tmp5) + (((m * _tmp7) / _tmp5) + ((_tmp9 / _tmp11) + (_tmp7 / _tmp5))))) - (_tmp9 / _tmp12)) - ((_tmp8 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp8 * _tmp14) / _tmp11)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_flank_other_edge, of the zone.
-// Total ops: 20 (6 add, 4 mul, 4 div, 0 sqrt, 4 neg, 2 moment calls), 2 temporaries
+// Total ops: 18 (6 add, 4 mul, 4 div, 0 sqrt, 2 neg, 2 moment calls), 2 temporaries
 template <typename Scalar>
 inline void parametric_wave_curve_beyond_branch_pressure_flank_other_edge_atoms(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& /*y*/, const Scalar& /*one_plus_y*/, Scalar* out) {
   using std::sqrt;
   const Scalar _tmp0 = (Scalar(1.0) + m) * Ca;
-  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), -((Scalar(1.0) - Ca) / _tmp0));
+  out[0] = wavecontact::edge_moment<Scalar>(0, 2, -((Scalar(1.0) + (m * Ca)) / _tmp0), (Ca - Scalar(1.0)) / _tmp0);
   const Scalar _tmp1 = (Scalar(1.0) + m) * Ca;
-  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), -((Scalar(1.0) - Ca) / _tmp1));
+  out[1] = wavecontact::edge_moment<Scalar>(1, 2, -((Scalar(1.0) + (m * Ca)) / _tmp1), (Ca - Scalar(1.0)) / _tmp1);
 }
 inline constexpr int parametric_wave_curve_beyond_branch_pressure_flank_other_edge_atoms_outputs = 2;
 
@@ -852,22 +852,22 @@ template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_other_edge(const Scalar& E, const Scalar& b1, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp2 = m * m;
-  const Scalar _tmp3 = H1 * (E * (_tmp0 * (Cx * Cx)));
-  const Scalar _tmp4 = _tmp2 * (atoms[1] * _tmp3);
-  const Scalar _tmp5 = (_tmp1 * _tmp1) * (Scalar(1.0) + m);
-  const Scalar _tmp6 = b1 * (Ca * _tmp5);
-  const Scalar _tmp7 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp8 = atoms[1] * _tmp7;
-  const Scalar _tmp9 = H1 * (_tmp0 * E);
-  const Scalar _tmp10 = atoms[1] * _tmp9;
-  const Scalar _tmp11 = b1 * _tmp5;
-  const Scalar _tmp12 = atoms[0] * (_tmp7 * Sa);
-  const Scalar _tmp13 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp14 = H1 * (E * (Cx * _tmp13));
-  const Scalar _tmp15 = H1 * (E * _tmp13);
-  return (((((((((m * (atoms[1] * _tmp15)) / _tmp6) + (((m * (atoms[1] * _tmp14)) / _tmp6) + (((_tmp2 * _tmp10) / _tmp11) + ((_tmp10 / _tmp6) + ((_tmp8 / _tmp6) + ((_tmp4 / _tmp6) + ((_tmp2 * _tmp8) / _tmp6))))))) - ((_tmp2 * (atoms[0] * (_tmp3 * Sa))) / _tmp6)) - ((_tmp2 * _tmp12) / _tmp6)) - (_tmp12 / _tmp6)) - ((atoms[0] * (_tmp9 * Sa)) / _tmp6)) - (_tmp4 / _tmp11)) - ((m * (atoms[0] * (Sa * _tmp14))) / _tmp6)) - ((m * (atoms[0] * (Sa * _tmp15))) / _tmp6);
+  const Scalar _tmp1 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp2 = H1 * (E * _tmp1);
+  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp4 = (_tmp3 * _tmp3) * (Scalar(1.0) + m);
+  const Scalar _tmp5 = b1 * (Ca * _tmp4);
+  const Scalar _tmp6 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = H1 * (_tmp0 * E);
+  const Scalar _tmp9 = atoms[1] * _tmp8;
+  const Scalar _tmp10 = b1 * _tmp4;
+  const Scalar _tmp11 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp12 = atoms[1] * _tmp11;
+  const Scalar _tmp13 = H1 * (E * (_tmp0 * (Cx * Cx)));
+  const Scalar _tmp14 = _tmp7 * (atoms[1] * _tmp13);
+  const Scalar _tmp15 = atoms[0] * (_tmp11 * Sa);
+  return (((((((((m * (atoms[1] * _tmp2)) / _tmp5) + (((m * (atoms[1] * _tmp6)) / _tmp5) + (((_tmp7 * _tmp9) / _tmp10) + ((_tmp9 / _tmp5) + ((_tmp12 / _tmp5) + ((_tmp14 / _tmp5) + ((_tmp7 * _tmp12) / _tmp5))))))) - ((_tmp7 * (atoms[0] * (_tmp13 * Sa))) / _tmp5)) - ((_tmp7 * _tmp15) / _tmp5)) - (_tmp15 / _tmp5)) - ((atoms[0] * (_tmp8 * Sa)) / _tmp5)) - (_tmp14 / _tmp10)) - ((m * (atoms[0] * (Sa * _tmp6))) / _tmp5)) - ((m * (atoms[0] * (Sa * _tmp2))) / _tmp5);
 }
 
 // The atoms of parametric_wave_curve_beyond_branch_pressure_flank_jump, at the point's Cauchy argument y.
@@ -886,7 +886,7 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_jump(const Scal
   using std::sqrt;
   const Scalar _tmp0 = Scalar(1.0) + Cx;
   const Scalar _tmp1 = Cx * m;
-  const Scalar _tmp2 = Scalar(1.0) - _tmp1;
+  const Scalar _tmp2 = _tmp1 - Scalar(1.0);
   const Scalar _tmp3 = Scalar(1.0) + _tmp1;
   return (m * (atoms[0] * (H1 * (E * (Cx * ((Scalar(1.0) + m) * (_tmp0 * (sqrt(-(D / (_tmp0 * Ca))) * Scalar(4.0))))))))) / (b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
 }
@@ -896,7 +896,7 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_jump(const Scal
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_own_argument(const Scalar& /*E*/, const Scalar& /*b1*/, const Scalar& /*H1*/, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/) {
   using std::sqrt;
-  return -((Ca * (Scalar(1.0) - m)) / (Scalar(1.0) - (Ca * m)));
+  return -((Ca * (m - Scalar(1.0))) / ((Ca * m) - Scalar(1.0)));
 }
 
 // z of the other piece's pole factor.
@@ -908,19 +908,19 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_flank_other_argument(
 }
 
 // A pole v^2 of the flank's g; where real and > beta^2 the contact cannot reach it.
-// Total ops: 4 (2 add, 0 mul, 1 div, 0 sqrt, 1 neg), 0 temporaries
+// Total ops: 3 (2 add, 0 mul, 1 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_flank_pole_square_0(const Scalar& /*H1*/, const Scalar& m) {
   using std::sqrt;
-  return -((Scalar(1.0) - m) / (Scalar(1.0) + m));
+  return (m - Scalar(1.0)) / (Scalar(1.0) + m);
 }
 
 // A pole v^2 = tan^2(x^/2) of g; where real and > 0 the contact cannot reach it.
-// Total ops: 4 (2 add, 0 mul, 1 div, 0 sqrt, 1 neg), 0 temporaries
+// Total ops: 3 (2 add, 0 mul, 1 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_pole_square_0(const Scalar& /*H1*/, const Scalar& m) {
   using std::sqrt;
-  return -((m + Scalar(1.0)) / (Scalar(1.0) - m));
+  return (Scalar(1.0) + m) / (m - Scalar(1.0));
 }
 
 // The evaluators above behind the runtime's uniform interface.
