@@ -153,10 +153,37 @@ class Graph {
     return acc;
   }
 
+  // Terms over one denominator share its division: sum n_i/d = (sum n_i)/d.
   int lower_terms(const ex& e) {
     std::vector<std::pair<bool, int>> terms;
     for (const ex& term : sorted_operands(e)) terms.push_back(lower_signed(term));
-    // Start from a positive term when there is one.
+    std::vector<std::pair<bool, int>> grouped;
+    std::map<int, std::vector<std::pair<bool, int>>> over;  // denominator: its terms' numerators
+    for (const auto& [negative, node] : terms) {
+      if (nodes_[node].op == Op::Div) {
+        auto& numerators = over[nodes_[node].b];
+        if (numerators.empty()) grouped.push_back({negative, node});  // the group's place
+        numerators.push_back({negative, nodes_[node].a});
+      } else {
+        grouped.push_back({negative, node});
+      }
+    }
+    for (auto& [negative, node] : grouped) {
+      if (nodes_[node].op != Op::Div || over[nodes_[node].b].size() < 2) continue;
+      const int denominator = nodes_[node].b;
+      auto& numerators = over[denominator];
+      const bool all_negative = std::all_of(numerators.begin(), numerators.end(), [](const auto& t) { return t.first; });
+      if (all_negative) {
+        for (auto& t : numerators) t.first = false;
+      }
+      negative = all_negative;
+      node = make(Op::Div, signed_sum(numerators), denominator);
+    }
+    return signed_sum(grouped);
+  }
+
+  // sum of (negative ? -node : node), from a positive term when there is one.
+  int signed_sum(std::vector<std::pair<bool, int>> terms) {
     std::stable_partition(terms.begin(), terms.end(), [](const auto& t) { return !t.first; });
     int acc = terms.front().first ? make(Op::Neg, terms.front().second) : terms.front().second;
     for (std::size_t i = 1; i < terms.size(); ++i) {

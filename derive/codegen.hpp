@@ -3,7 +3,8 @@
 // hash-consed graph: identical subexpressions become one node, nodes used twice
 // become `const Scalar _tmpN` temporaries. Integer powers become products (by
 // squaring), q^(k/2) becomes q^((k-1)/2) * sqrt(q), polynomials of degree >= 2 are
-// evaluated in Horner form, and rational constants become exact double literals.
+// evaluated in Horner form, the terms of a sum over one denominator share its division, and
+// rational constants become exact double literals.
 #pragma once
 
 #include <string>

@@ -71,7 +71,7 @@ inline Scalar waviness_pa_over_pstar(const Scalar& m, const Scalar& Ca, const Sc
 // Load per unit length P (eq. 6) for b1/2 < a < b1, where the zone reaches the |cos|
 // branch of eq. 2: the sub-interval moments of both branches (derive/sub_interval.hpp),
 // I_{j,l} from wavecontact/quadratic_moment.hpp.
-// Total ops: 39 (7 add, 16 mul, 8 div, 2 sqrt, 4 neg, 2 moment calls), 7 temporaries
+// Total ops: 38 (7 add, 16 mul, 7 div, 2 sqrt, 4 neg, 2 moment calls), 6 temporaries
 template <typename Scalar>
 inline Scalar waviness_load_beyond_half(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
   using std::sqrt;
@@ -80,14 +80,13 @@ inline Scalar waviness_load_beyond_half(const Scalar& E, const Scalar& H1, const
   const Scalar _tmp2 = Ca - Scalar(1.0);
   const Scalar _tmp3 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), _tmp2 / _tmp1);
   const Scalar _tmp4 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
-  const Scalar _tmp5 = _tmp1 * _tmp1;
-  const Scalar _tmp6 = Ca * (Scalar(1.0) + m);
-  return (((_tmp3 * (m * _tmp4)) / _tmp5) + ((_tmp3 * _tmp4) / _tmp5)) - ((wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + _tmp0) / _tmp6), _tmp2 / _tmp6) * (Sa * (H1 * (E * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))))) / _tmp6);
+  const Scalar _tmp5 = Ca * (Scalar(1.0) + m);
+  return (((_tmp3 * (m * _tmp4)) + (_tmp3 * _tmp4)) / (_tmp1 * _tmp1)) - ((wavecontact::quadratic_moment<Scalar>(1, 2, -((Scalar(1.0) + _tmp0) / _tmp5), _tmp2 / _tmp5) * (Sa * (H1 * (E * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))))) / _tmp5);
 }
 
 // dP/dSa - dP/dCa of waviness_load_beyond_half: dP/da = (pi/b1) sin(pi a/b1) times this.
 // For waviness_top_piece_argument < 0 (its terms cancel as a -> b1/2+).
-// Total ops: 106 (17 add, 61 mul, 18 div, 2 sqrt, 4 neg, 4 moment calls), 26 temporaries
+// Total ops: 99 (17 add, 61 mul, 11 div, 2 sqrt, 4 neg, 4 moment calls), 24 temporaries
 template <typename Scalar>
 inline Scalar waviness_load_slope_factor_beyond_half(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
   using std::sqrt;
@@ -101,61 +100,56 @@ inline Scalar waviness_load_slope_factor_beyond_half(const Scalar& E, const Scal
   const Scalar _tmp7 = Sa * (H1 * (E * (_tmp6 * Scalar(4.0))));
   const Scalar _tmp8 = m * m;
   const Scalar _tmp9 = _tmp1 * _tmp1;
-  const Scalar _tmp10 = _tmp9 * _tmp9;
-  const Scalar _tmp11 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp2, _tmp4);
-  const Scalar _tmp12 = Sa * (H1 * (E * (_tmp6 * Scalar(3.0))));
-  const Scalar _tmp13 = _tmp1 * _tmp9;
+  const Scalar _tmp10 = wavecontact::quadratic_moment<Scalar>(0, 2, _tmp2, _tmp4);
+  const Scalar _tmp11 = Sa * (H1 * (_tmp6 * E));
+  const Scalar _tmp12 = _tmp1 * _tmp9;
+  const Scalar _tmp13 = Sa * (H1 * (E * (_tmp6 * Scalar(3.0))));
   const Scalar _tmp14 = _tmp6 * Scalar(2.0);
   const Scalar _tmp15 = H1 * (E * (Ca * _tmp14));
-  const Scalar _tmp16 = Sa * (H1 * (_tmp6 * E));
-  const Scalar _tmp17 = Ca * _tmp13;
-  const Scalar _tmp18 = Scalar(1.0) + m;
-  const Scalar _tmp19 = Ca * _tmp18;
-  const Scalar _tmp20 = -((Scalar(1.0) + _tmp0) / _tmp19);
-  const Scalar _tmp21 = _tmp3 / _tmp19;
-  const Scalar _tmp22 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp20, _tmp21);
-  const Scalar _tmp23 = sqrt(-(Scalar(1.0) / Ca));
-  const Scalar _tmp24 = H1 * (E * _tmp14);
-  const Scalar _tmp25 = Ca * Ca;
-  return ((((((((_tmp5 * (_tmp7 * _tmp8)) / _tmp10) + (((_tmp11 * (m * _tmp12)) / _tmp13) + (((_tmp11 * (_tmp8 * _tmp12)) / _tmp13) + (((_tmp11 * (m * _tmp15)) / _tmp13) + (((_tmp11 * (_tmp8 * _tmp15)) / _tmp13) + (((_tmp11 * (m * _tmp16)) / _tmp17) + ((_tmp11 * _tmp16) / _tmp17))))))) - ((_tmp22 * (H1 * (E * (_tmp23 * Scalar(2.0))))) / _tmp19)) - ((_tmp11 * (m * _tmp24)) / _tmp13)) - ((_tmp11 * _tmp24) / _tmp13)) - ((_tmp22 * (Sa * (H1 * (E * (_tmp23 * Scalar(3.0)))))) / (_tmp18 * _tmp25))) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp20, _tmp21) * (Sa * (H1 * (E * (_tmp23 * Scalar(4.0)))))) / ((_tmp18 * _tmp18) * (Ca * _tmp25)))) - ((_tmp5 * _tmp7) / _tmp10);
+  const Scalar _tmp16 = H1 * (E * _tmp14);
+  const Scalar _tmp17 = Scalar(1.0) + m;
+  const Scalar _tmp18 = Ca * _tmp17;
+  const Scalar _tmp19 = -((Scalar(1.0) + _tmp0) / _tmp18);
+  const Scalar _tmp20 = _tmp3 / _tmp18;
+  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 2, _tmp19, _tmp20);
+  const Scalar _tmp22 = sqrt(-(Scalar(1.0) / Ca));
+  const Scalar _tmp23 = Ca * Ca;
+  return ((((((_tmp5 * (_tmp7 * _tmp8)) - (_tmp5 * _tmp7)) / (_tmp9 * _tmp9)) + ((((_tmp10 * (m * _tmp11)) + (_tmp10 * _tmp11)) / (Ca * _tmp12)) + (((((_tmp10 * (m * _tmp13)) + ((_tmp10 * (_tmp8 * _tmp13)) + ((_tmp10 * (_tmp8 * _tmp15)) + (_tmp10 * (m * _tmp15))))) - (_tmp10 * (m * _tmp16))) - (_tmp10 * _tmp16)) / _tmp12))) - ((_tmp21 * (H1 * (E * (_tmp22 * Scalar(2.0))))) / _tmp18)) - ((_tmp21 * (Sa * (H1 * (E * (_tmp22 * Scalar(3.0)))))) / (_tmp17 * _tmp23))) - ((wavecontact::quadratic_moment<Scalar>(2, 3, _tmp19, _tmp20) * (Sa * (H1 * (E * (_tmp22 * Scalar(4.0)))))) / ((_tmp17 * _tmp17) * (Ca * _tmp23)));
 }
 
 // The same slope factor from the moments of (1 + v^2) g' + v g (no end point differentiated):
 // for waviness_top_piece_argument >= 0 (its pieces cancel as m (-cos(pi a/b1)) grows).
-// Total ops: 138 (23 add, 79 mul, 24 div, 2 sqrt, 4 neg, 6 moment calls), 29 temporaries
+// Total ops: 124 (23 add, 79 mul, 10 div, 2 sqrt, 4 neg, 6 moment calls), 26 temporaries
 template <typename Scalar>
 inline Scalar waviness_load_slope_factor_by_parts(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/) {
   using std::sqrt;
   const Scalar _tmp0 = Ca * m;
-  const Scalar _tmp1 = _tmp0 - Scalar(1.0);
-  const Scalar _tmp2 = -((Ca * (m - Scalar(1.0))) / _tmp1);
-  const Scalar _tmp3 = Ca - Scalar(1.0);
-  const Scalar _tmp4 = _tmp3 / _tmp1;
-  const Scalar _tmp5 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp2, _tmp4);
-  const Scalar _tmp6 = m * m;
-  const Scalar _tmp7 = sqrt(-Ca);
-  const Scalar _tmp8 = _tmp1 * (_tmp1 * _tmp1);
-  const Scalar _tmp9 = Scalar(1.0) + m;
-  const Scalar _tmp10 = Ca * _tmp9;
-  const Scalar _tmp11 = -((Scalar(1.0) + _tmp0) / _tmp10);
-  const Scalar _tmp12 = _tmp3 / _tmp10;
-  const Scalar _tmp13 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp11, _tmp12);
-  const Scalar _tmp14 = sqrt(-(Scalar(1.0) / Ca));
-  const Scalar _tmp15 = _tmp9 * _tmp9;
-  const Scalar _tmp16 = Ca * Ca;
-  const Scalar _tmp17 = _tmp15 * _tmp16;
-  const Scalar _tmp18 = _tmp7 * Scalar(3.0);
-  const Scalar _tmp19 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp2, _tmp4);
-  const Scalar _tmp20 = H1 * (E * (_tmp16 * _tmp18));
-  const Scalar _tmp21 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp11, _tmp12);
-  const Scalar _tmp22 = m * (H1 * (E * (_tmp14 * Scalar(3.0))));
-  const Scalar _tmp23 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp2, _tmp4);
-  const Scalar _tmp24 = H1 * (E * (_tmp16 * _tmp7));
-  const Scalar _tmp25 = H1 * (_tmp14 * E);
-  const Scalar _tmp26 = Ca * _tmp15;
-  const Scalar _tmp27 = H1 * (E * (Ca * _tmp18));
-  const Scalar _tmp28 = m * _tmp27;
-  return (((((((((((_tmp5 * (_tmp6 * (H1 * (E * (_tmp7 * Scalar(4.0)))))) / _tmp8) + (((_tmp13 * (m * (H1 * (E * (_tmp14 * Scalar(4.0)))))) / _tmp17) + (((_tmp5 * (m * (H1 * (E * _tmp18)))) / _tmp8) + (((_tmp19 * (m * _tmp20)) / _tmp8) + (((_tmp19 * (_tmp6 * _tmp20)) / _tmp8) + (((_tmp21 * _tmp22) / _tmp15) + (((_tmp19 * (H1 * (E * (Ca * (_tmp7 * Scalar(2.0)))))) / _tmp8) + (((_tmp23 * (_tmp6 * _tmp24)) / _tmp8) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp11, _tmp12) * _tmp25) / _tmp9) + ((_tmp25 * _tmp13) / _tmp17)))))))))) - ((_tmp23 * _tmp24) / _tmp8)) - ((_tmp5 * (H1 * (E * _tmp7))) / _tmp8)) - ((_tmp21 * (H1 * (E * (_tmp14 * Scalar(2.0))))) / _tmp26)) - ((_tmp13 * _tmp22) / _tmp26)) - ((_tmp5 * (_tmp6 * _tmp27)) / _tmp8)) - ((_tmp5 * _tmp28) / _tmp8)) - ((_tmp28 * _tmp19) / _tmp8)) - ((_tmp21 * (m * (H1 * (E * (_tmp14 * Scalar(5.0)))))) / _tmp26)) - ((_tmp19 * (_tmp6 * (H1 * (E * (Ca * (_tmp7 * Scalar(5.0))))))) / _tmp8);
+  const Scalar _tmp1 = Scalar(1.0) + m;
+  const Scalar _tmp2 = Ca * _tmp1;
+  const Scalar _tmp3 = -((Scalar(1.0) + _tmp0) / _tmp2);
+  const Scalar _tmp4 = Ca - Scalar(1.0);
+  const Scalar _tmp5 = _tmp4 / _tmp2;
+  const Scalar _tmp6 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp3, _tmp5);
+  const Scalar _tmp7 = sqrt(-(Scalar(1.0) / Ca));
+  const Scalar _tmp8 = m * (H1 * (E * (_tmp7 * Scalar(3.0))));
+  const Scalar _tmp9 = _tmp1 * _tmp1;
+  const Scalar _tmp10 = _tmp0 - Scalar(1.0);
+  const Scalar _tmp11 = -((Ca * (m - Scalar(1.0))) / _tmp10);
+  const Scalar _tmp12 = _tmp4 / _tmp10;
+  const Scalar _tmp13 = wavecontact::quadratic_moment<Scalar>(0, 3, _tmp11, _tmp12);
+  const Scalar _tmp14 = m * m;
+  const Scalar _tmp15 = sqrt(-Ca);
+  const Scalar _tmp16 = _tmp15 * Scalar(3.0);
+  const Scalar _tmp17 = wavecontact::quadratic_moment<Scalar>(1, 3, _tmp11, _tmp12);
+  const Scalar _tmp18 = Ca * Ca;
+  const Scalar _tmp19 = H1 * (E * (_tmp18 * _tmp16));
+  const Scalar _tmp20 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp11, _tmp12);
+  const Scalar _tmp21 = H1 * (E * (_tmp18 * _tmp15));
+  const Scalar _tmp22 = H1 * (E * (Ca * _tmp16));
+  const Scalar _tmp23 = m * _tmp22;
+  const Scalar _tmp24 = H1 * (_tmp7 * E);
+  const Scalar _tmp25 = wavecontact::quadratic_moment<Scalar>(2, 3, _tmp3, _tmp5);
+  return (((_tmp6 * _tmp8) / _tmp9) + ((((((((((_tmp13 * (_tmp14 * (H1 * (E * (_tmp15 * Scalar(4.0)))))) + ((_tmp13 * (m * (H1 * (E * _tmp16)))) + ((_tmp17 * (m * _tmp19)) + ((_tmp17 * (_tmp14 * _tmp19)) + ((_tmp20 * (_tmp14 * _tmp21)) + (_tmp17 * (H1 * (E * (Ca * (_tmp15 * Scalar(2.0))))))))))) - (_tmp20 * _tmp21)) - (_tmp13 * (H1 * (E * _tmp15)))) - (_tmp13 * (_tmp14 * _tmp22))) - (_tmp13 * _tmp23)) - (_tmp23 * _tmp17)) - (_tmp17 * (_tmp14 * (H1 * (E * (Ca * (_tmp15 * Scalar(5.0)))))))) / (_tmp10 * (_tmp10 * _tmp10))) + (((wavecontact::quadratic_moment<Scalar>(0, 3, _tmp3, _tmp5) * _tmp24) / _tmp1) + (((_tmp24 * _tmp25) + (_tmp25 * (m * (H1 * (E * (_tmp7 * Scalar(4.0))))))) / (_tmp9 * _tmp18))))) - (((_tmp6 * (m * (H1 * (E * (_tmp7 * Scalar(5.0)))))) + ((_tmp6 * (H1 * (E * (_tmp7 * Scalar(2.0))))) + (_tmp25 * _tmp8))) / (Ca * _tmp9));
 }
 
 // z of the top piece's I_{j,l} beyond b1/2 (it grows without bound towards b1/2): it selects
@@ -170,7 +164,7 @@ inline Scalar waviness_top_piece_argument(const Scalar& m, const Scalar& Ca, con
 
 // waviness_load_beyond_half with the top piece in its large-argument form (I_{j,l}(z) =
 // K z^-(j+1/2) - z^-l I_{l-j-1,l}(1/z)): for waviness_top_piece_argument >= 1.
-// Total ops: 56 (10 add, 24 mul, 12 div, 3 sqrt, 5 neg, 2 moment calls), 10 temporaries
+// Total ops: 52 (9 add, 24 mul, 9 div, 3 sqrt, 5 neg, 2 moment calls), 9 temporaries
 template <typename Scalar>
 inline Scalar waviness_load_near_half(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
   using std::sqrt;
@@ -179,12 +173,11 @@ inline Scalar waviness_load_near_half(const Scalar& E, const Scalar& H1, const S
   const Scalar _tmp2 = Ca - Scalar(1.0);
   const Scalar _tmp3 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (m - Scalar(1.0))) / _tmp1), _tmp2 / _tmp1);
   const Scalar _tmp4 = Sa * (H1 * (E * (Scalar(2.0) * sqrt(-Ca))));
-  const Scalar _tmp5 = _tmp1 * _tmp1;
+  const Scalar _tmp5 = Scalar(1.0) + m;
   const Scalar _tmp6 = Scalar(1.0) + _tmp0;
-  const Scalar _tmp7 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * (Scalar(1.0) + m)) / _tmp6), -(_tmp2 / _tmp6));
+  const Scalar _tmp7 = wavecontact::quadratic_moment<Scalar>(0, 2, -((Ca * _tmp5) / _tmp6), -(_tmp2 / _tmp6));
   const Scalar _tmp8 = Sa * (H1 * (E * (Ca * (sqrt(-(Scalar(1.0) / Ca)) * Scalar(2.0)))));
-  const Scalar _tmp9 = _tmp6 * _tmp6;
-  return ((_tmp3 * _tmp4) / _tmp5) + (((_tmp3 * (m * _tmp4)) / _tmp5) + (((_tmp7 * _tmp8) / _tmp9) + (((Sa * (H1 * (E * (sqrt((Scalar(1.0) / _tmp6) + (m / _tmp6)) * Scalar(1.5707963267948966))))) / _tmp6) + ((_tmp7 * (m * _tmp8)) / _tmp9))));
+  return (((_tmp3 * (m * _tmp4)) + (_tmp3 * _tmp4)) / (_tmp1 * _tmp1)) + (((Sa * (H1 * (E * (sqrt(_tmp5 / _tmp6) * Scalar(1.5707963267948966))))) / _tmp6) + (((_tmp7 * (m * _tmp8)) + (_tmp7 * _tmp8)) / (_tmp6 * _tmp6)));
 }
 
 // The profile of eq. 2 in Cx = cos x^ >= 0: w = Y(Cx) (eq. 2 is odd in Cx: Y(-|Cx|) = -Y(|Cx|)).
@@ -229,27 +222,24 @@ inline void waviness_pressure_beyond_half_top_own_atoms(const Scalar& /*E*/, con
 inline constexpr int waviness_pressure_beyond_half_top_own_atoms_outputs = 2;
 
 // Part of the pressure: the own piece's moment (I_{j,l}), from waviness_pressure_beyond_half_top_own_atoms.
-// Total ops: 67 (14 add, 38 mul, 13 div, 1 sqrt, 1 neg), 16 temporaries
+// Total ops: 58 (14 add, 38 mul, 4 div, 1 sqrt, 1 neg), 13 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_top_own(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = H1 * (_tmp0 * E);
-  const Scalar _tmp2 = atoms[0] * _tmp1;
-  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp4 = _tmp3 * _tmp3;
-  const Scalar _tmp5 = _tmp4 * b1;
-  const Scalar _tmp6 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp7 = atoms[0] * _tmp6;
-  const Scalar _tmp8 = m * m;
-  const Scalar _tmp9 = _tmp8 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp10 = _tmp4 * (Scalar(1.0) + m);
-  const Scalar _tmp11 = b1 * _tmp10;
-  const Scalar _tmp12 = b1 * (Ca * _tmp10);
-  const Scalar _tmp13 = atoms[1] * _tmp6;
-  const Scalar _tmp14 = atoms[1] * _tmp1;
-  const Scalar _tmp15 = _tmp0 * Scalar(2.0);
-  return (((((((((m * _tmp2) / _tmp5) + ((_tmp2 / _tmp5) + (((m * _tmp7) / _tmp5) + ((_tmp9 / _tmp11) + (_tmp7 / _tmp5))))) - (_tmp9 / _tmp12)) - ((_tmp8 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp8 * _tmp14) / _tmp11)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
+  const Scalar _tmp0 = m * m;
+  const Scalar _tmp1 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
+  const Scalar _tmp2 = _tmp0 * (atoms[1] * (H1 * (E * (_tmp1 * (Cx * Cx)))));
+  const Scalar _tmp3 = H1 * (_tmp1 * E);
+  const Scalar _tmp4 = atoms[1] * _tmp3;
+  const Scalar _tmp5 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp6 = _tmp5 * _tmp5;
+  const Scalar _tmp7 = _tmp6 * (Scalar(1.0) + m);
+  const Scalar _tmp8 = atoms[0] * _tmp3;
+  const Scalar _tmp9 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp10 = atoms[0] * _tmp9;
+  const Scalar _tmp11 = _tmp1 * Scalar(2.0);
+  const Scalar _tmp12 = atoms[1] * _tmp9;
+  return (((_tmp2 - (_tmp0 * _tmp4)) / (b1 * _tmp7)) + (((m * _tmp8) + (_tmp8 + (_tmp10 + (m * _tmp10)))) / (_tmp6 * b1))) - (((m * (atoms[1] * (H1 * (E * _tmp11)))) + ((m * (atoms[1] * (H1 * (E * (Cx * _tmp11))))) + (_tmp4 + (_tmp12 + (_tmp2 + (_tmp0 * _tmp12)))))) / (b1 * (Ca * _tmp7)));
 }
 
 // The atoms of waviness_pressure_beyond_half_top_own_edge, of the zone.
@@ -265,27 +255,25 @@ inline void waviness_pressure_beyond_half_top_own_edge_atoms(const Scalar& /*E*/
 inline constexpr int waviness_pressure_beyond_half_top_own_edge_atoms_outputs = 2;
 
 // Part of the pressure: the own piece's moment in I'_{j,l} (for own_argument < 0), from waviness_pressure_beyond_half_top_own_edge_atoms.
-// Total ops: 80 (16 add, 47 mul, 15 div, 1 sqrt, 1 neg), 16 temporaries
+// Total ops: 68 (16 add, 47 mul, 3 div, 1 sqrt, 1 neg), 14 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_top_own_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp1 = _tmp0 * Scalar(2.0);
   const Scalar _tmp2 = H1 * (E * _tmp1);
-  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp4 = (_tmp3 * _tmp3) * (Scalar(1.0) + m);
-  const Scalar _tmp5 = b1 * (Ca * _tmp4);
-  const Scalar _tmp6 = H1 * (E * (Cx * _tmp1));
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = H1 * (_tmp0 * E);
-  const Scalar _tmp9 = atoms[1] * _tmp8;
-  const Scalar _tmp10 = b1 * _tmp4;
-  const Scalar _tmp11 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp12 = atoms[1] * _tmp11;
-  const Scalar _tmp13 = H1 * (E * (_tmp0 * (Cx * Cx)));
-  const Scalar _tmp14 = _tmp7 * (atoms[1] * _tmp13);
-  const Scalar _tmp15 = atoms[0] * (_tmp11 * Sa);
-  return (((((((((m * (atoms[1] * _tmp2)) / _tmp5) + (((m * (atoms[1] * _tmp6)) / _tmp5) + (((_tmp7 * _tmp9) / _tmp10) + ((_tmp9 / _tmp5) + ((_tmp12 / _tmp5) + ((_tmp14 / _tmp5) + ((_tmp7 * _tmp12) / _tmp5))))))) - ((_tmp7 * (atoms[0] * (_tmp13 * Sa))) / _tmp5)) - ((_tmp7 * _tmp15) / _tmp5)) - (_tmp15 / _tmp5)) - ((atoms[0] * (_tmp8 * Sa)) / _tmp5)) - (_tmp14 / _tmp10)) - ((m * (atoms[0] * (Sa * _tmp6))) / _tmp5)) - ((m * (atoms[0] * (Sa * _tmp2))) / _tmp5);
+  const Scalar _tmp3 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp4 = H1 * (_tmp0 * E);
+  const Scalar _tmp5 = atoms[1] * _tmp4;
+  const Scalar _tmp6 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp7 = atoms[1] * _tmp6;
+  const Scalar _tmp8 = m * m;
+  const Scalar _tmp9 = H1 * (E * (_tmp0 * (Cx * Cx)));
+  const Scalar _tmp10 = _tmp8 * (atoms[1] * _tmp9);
+  const Scalar _tmp11 = atoms[0] * (_tmp6 * Sa);
+  const Scalar _tmp12 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp13 = (_tmp12 * _tmp12) * (Scalar(1.0) + m);
+  return (((((((((m * (atoms[1] * _tmp2)) + ((m * (atoms[1] * _tmp3)) + (_tmp5 + (_tmp7 + (_tmp10 + (_tmp8 * _tmp7)))))) - (_tmp8 * (atoms[0] * (_tmp9 * Sa)))) - (_tmp8 * _tmp11)) - _tmp11) - (atoms[0] * (_tmp4 * Sa))) - (m * (atoms[0] * (Sa * _tmp3)))) - (m * (atoms[0] * (Sa * _tmp2)))) / (b1 * (Ca * _tmp13))) + (((_tmp8 * _tmp5) - _tmp10) / (b1 * _tmp13));
 }
 
 // The atoms of waviness_pressure_beyond_half_top_other_cauchy, at the point's Cauchy argument y.
@@ -304,7 +292,7 @@ inline constexpr int waviness_pressure_beyond_half_top_other_cauchy_atoms_output
 
 // Part of the pressure: the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the
 // other branch's pole, where _other + _jump cancel, from waviness_pressure_beyond_half_top_other_cauchy_atoms.
-// Total ops: 294 (57 add, 179 mul, 56 div, 1 sqrt, 1 neg), 42 temporaries
+// Total ops: 240 (57 add, 179 mul, 2 div, 1 sqrt, 1 neg), 41 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_top_other_cauchy(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
@@ -312,45 +300,44 @@ inline Scalar waviness_pressure_beyond_half_top_other_cauchy(const Scalar& E, co
   const Scalar _tmp1 = Ca * Ca;
   const Scalar _tmp2 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp3 = _tmp2 * Scalar(4.0);
-  const Scalar _tmp4 = (Ca * m) - Scalar(1.0);
-  const Scalar _tmp5 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp6 = b1 * (D * ((_tmp4 * _tmp4) * (_tmp5 * _tmp5)));
-  const Scalar _tmp7 = _tmp2 * Scalar(3.0);
-  const Scalar _tmp8 = atoms[0] * (H1 * (E * (_tmp0 * _tmp7)));
-  const Scalar _tmp9 = m * m;
-  const Scalar _tmp10 = _tmp1 * _tmp7;
-  const Scalar _tmp11 = _tmp2 * Scalar(2.0);
-  const Scalar _tmp12 = Ca * _tmp11;
-  const Scalar _tmp13 = H1 * (E * _tmp12);
-  const Scalar _tmp14 = m * _tmp9;
-  const Scalar _tmp15 = _tmp1 * _tmp11;
-  const Scalar _tmp16 = Ca * _tmp2;
-  const Scalar _tmp17 = H1 * (E * _tmp16);
-  const Scalar _tmp18 = atoms[1] * _tmp17;
-  const Scalar _tmp19 = atoms[0] * _tmp17;
-  const Scalar _tmp20 = Cx * _tmp0;
-  const Scalar _tmp21 = atoms[0] * (H1 * (E * (_tmp2 * _tmp20)));
-  const Scalar _tmp22 = atoms[0] * (H1 * (E * (_tmp2 * _tmp0)));
-  const Scalar _tmp23 = _tmp2 * _tmp1;
-  const Scalar _tmp24 = H1 * (E * _tmp23);
-  const Scalar _tmp25 = atoms[1] * _tmp24;
-  const Scalar _tmp26 = atoms[2] * (Sx * _tmp24);
-  const Scalar _tmp27 = H1 * (E * (Cx * _tmp23));
-  const Scalar _tmp28 = atoms[2] * (Sx * _tmp27);
-  const Scalar _tmp29 = atoms[1] * (H1 * (E * (_tmp23 * _tmp20)));
-  const Scalar _tmp30 = H1 * (E * (_tmp0 * _tmp23));
-  const Scalar _tmp31 = atoms[0] * _tmp30;
-  const Scalar _tmp32 = atoms[0] * _tmp24;
-  const Scalar _tmp33 = H1 * (E * (_tmp0 * _tmp16));
-  const Scalar _tmp34 = atoms[1] * _tmp33;
-  const Scalar _tmp35 = H1 * (E * (_tmp20 * _tmp16));
-  const Scalar _tmp36 = atoms[0] * _tmp35;
-  const Scalar _tmp37 = atoms[1] * _tmp35;
-  const Scalar _tmp38 = H1 * (E * (Cx * _tmp16));
-  const Scalar _tmp39 = atoms[1] * (H1 * (E * (_tmp0 * _tmp12)));
-  const Scalar _tmp40 = H1 * (E * (Cx * _tmp12));
-  const Scalar _tmp41 = H1 * (E * (Cx * (Ca * _tmp7)));
-  return ((((((((((((((((((((((((((((((m * (atoms[1] * (H1 * (E * (_tmp0 * (_tmp1 * _tmp3)))))) / _tmp6) + (((m * (atoms[0] * (H1 * (E * (Cx * _tmp7))))) / _tmp6) + (((m * _tmp8) / _tmp6) + (((_tmp9 * _tmp8) / _tmp6) + (((m * (atoms[1] * (H1 * (E * (Cx * _tmp10))))) / _tmp6) + (((_tmp9 * (atoms[1] * (H1 * (E * (_tmp0 * _tmp10))))) / _tmp6) + (((_tmp9 * (atoms[0] * (H1 * (E * (Cx * _tmp11))))) / _tmp6) + (((_tmp9 * (atoms[0] * _tmp13)) / _tmp6) + (((_tmp14 * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp6) + (((_tmp9 * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp6) + (((atoms[0] * (H1 * (E * (Cx * _tmp2)))) / _tmp6) + ((_tmp18 / _tmp6) + (((m * _tmp19) / _tmp6) + (((_tmp14 * _tmp21) / _tmp6) + (((_tmp9 * _tmp21) / _tmp6) + ((_tmp22 / _tmp6) + (((_tmp14 * _tmp22) / _tmp6) + ((_tmp25 / _tmp6) + (((m * _tmp26) / _tmp6) + (((atoms[1] * _tmp27) / _tmp6) + (((m * _tmp28) / _tmp6) + (((_tmp9 * _tmp26) / _tmp6) + (((_tmp9 * _tmp28) / _tmp6) + (((_tmp14 * _tmp29) / _tmp6) + (((_tmp9 * _tmp29) / _tmp6) + (((_tmp9 * _tmp31) / _tmp6) + ((_tmp31 * _tmp14) / _tmp6))))))))))))))))))))))))))) - ((_tmp14 * (_tmp30 * atoms[1])) / _tmp6)) - ((_tmp9 * _tmp32) / _tmp6)) - ((_tmp14 * _tmp28) / _tmp6)) - ((_tmp14 * _tmp26) / _tmp6)) - ((_tmp14 * _tmp32) / _tmp6)) - (_tmp28 / _tmp6)) - (_tmp26 / _tmp6)) - ((m * _tmp25) / _tmp6)) - ((_tmp9 * _tmp34) / _tmp6)) - ((_tmp14 * (atoms[0] * _tmp33)) / _tmp6)) - ((_tmp14 * _tmp34) / _tmp6)) - ((_tmp9 * _tmp36) / _tmp6)) - ((_tmp9 * _tmp37) / _tmp6)) - ((_tmp14 * _tmp36) / _tmp6)) - ((_tmp14 * _tmp37) / _tmp6)) - ((atoms[0] * _tmp38) / _tmp6)) - ((atoms[1] * _tmp38) / _tmp6)) - (_tmp19 / _tmp6)) - ((m * _tmp18) / _tmp6)) - (_tmp39 / _tmp6)) - ((m * _tmp39) / _tmp6)) - ((_tmp9 * (atoms[0] * _tmp40)) / _tmp6)) - ((_tmp9 * (atoms[1] * _tmp40)) / _tmp6)) - ((_tmp9 * (atoms[1] * _tmp13)) / _tmp6)) - ((m * (atoms[0] * _tmp41)) / _tmp6)) - ((m * (atoms[1] * _tmp41)) / _tmp6)) - ((m * (atoms[0] * (H1 * (E * (_tmp0 * (Ca * _tmp3)))))) / _tmp6)) - ((_tmp9 * (atoms[0] * (H1 * (E * (_tmp0 * (Ca * (_tmp2 * Scalar(5.0)))))))) / _tmp6);
+  const Scalar _tmp4 = _tmp2 * Scalar(3.0);
+  const Scalar _tmp5 = atoms[0] * (H1 * (E * (_tmp0 * _tmp4)));
+  const Scalar _tmp6 = m * m;
+  const Scalar _tmp7 = _tmp1 * _tmp4;
+  const Scalar _tmp8 = _tmp2 * Scalar(2.0);
+  const Scalar _tmp9 = Ca * _tmp8;
+  const Scalar _tmp10 = H1 * (E * _tmp9);
+  const Scalar _tmp11 = m * _tmp6;
+  const Scalar _tmp12 = _tmp1 * _tmp8;
+  const Scalar _tmp13 = Ca * _tmp2;
+  const Scalar _tmp14 = H1 * (E * _tmp13);
+  const Scalar _tmp15 = atoms[1] * _tmp14;
+  const Scalar _tmp16 = atoms[0] * _tmp14;
+  const Scalar _tmp17 = Cx * _tmp0;
+  const Scalar _tmp18 = atoms[0] * (H1 * (E * (_tmp2 * _tmp17)));
+  const Scalar _tmp19 = atoms[0] * (H1 * (E * (_tmp2 * _tmp0)));
+  const Scalar _tmp20 = _tmp2 * _tmp1;
+  const Scalar _tmp21 = H1 * (E * _tmp20);
+  const Scalar _tmp22 = atoms[1] * _tmp21;
+  const Scalar _tmp23 = atoms[2] * (Sx * _tmp21);
+  const Scalar _tmp24 = H1 * (E * (Cx * _tmp20));
+  const Scalar _tmp25 = atoms[2] * (Sx * _tmp24);
+  const Scalar _tmp26 = atoms[1] * (H1 * (E * (_tmp20 * _tmp17)));
+  const Scalar _tmp27 = H1 * (E * (_tmp0 * _tmp20));
+  const Scalar _tmp28 = atoms[0] * _tmp27;
+  const Scalar _tmp29 = atoms[0] * _tmp21;
+  const Scalar _tmp30 = H1 * (E * (_tmp0 * _tmp13));
+  const Scalar _tmp31 = atoms[1] * _tmp30;
+  const Scalar _tmp32 = H1 * (E * (_tmp17 * _tmp13));
+  const Scalar _tmp33 = atoms[0] * _tmp32;
+  const Scalar _tmp34 = atoms[1] * _tmp32;
+  const Scalar _tmp35 = H1 * (E * (Cx * _tmp13));
+  const Scalar _tmp36 = atoms[1] * (H1 * (E * (_tmp0 * _tmp9)));
+  const Scalar _tmp37 = H1 * (E * (Cx * _tmp9));
+  const Scalar _tmp38 = H1 * (E * (Cx * (Ca * _tmp4)));
+  const Scalar _tmp39 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp40 = Scalar(1.0) + (Cx * m);
+  return ((((((((((((((((((((((((((((((m * (atoms[1] * (H1 * (E * (_tmp0 * (_tmp1 * _tmp3)))))) + ((m * (atoms[0] * (H1 * (E * (Cx * _tmp4))))) + ((m * _tmp5) + ((_tmp6 * _tmp5) + ((m * (atoms[1] * (H1 * (E * (Cx * _tmp7))))) + ((_tmp6 * (atoms[1] * (H1 * (E * (_tmp0 * _tmp7))))) + ((_tmp6 * (atoms[0] * (H1 * (E * (Cx * _tmp8))))) + ((_tmp6 * (atoms[0] * _tmp10)) + ((_tmp11 * (atoms[1] * (H1 * (E * _tmp12)))) + ((_tmp6 * (atoms[1] * (H1 * (E * (Cx * _tmp12))))) + ((atoms[0] * (H1 * (E * (Cx * _tmp2)))) + (_tmp15 + ((m * _tmp16) + ((_tmp11 * _tmp18) + ((_tmp6 * _tmp18) + (_tmp19 + ((_tmp11 * _tmp19) + (_tmp22 + ((m * _tmp23) + ((atoms[1] * _tmp24) + ((m * _tmp25) + ((_tmp6 * _tmp23) + ((_tmp6 * _tmp25) + ((_tmp11 * _tmp26) + ((_tmp6 * _tmp26) + ((_tmp6 * _tmp28) + (_tmp28 * _tmp11))))))))))))))))))))))))))) - (_tmp11 * (_tmp27 * atoms[1]))) - (_tmp6 * _tmp29)) - (_tmp11 * _tmp25)) - (_tmp11 * _tmp23)) - (_tmp11 * _tmp29)) - _tmp25) - _tmp23) - (m * _tmp22)) - (_tmp6 * _tmp31)) - (_tmp11 * (atoms[0] * _tmp30))) - (_tmp11 * _tmp31)) - (_tmp6 * _tmp33)) - (_tmp6 * _tmp34)) - (_tmp11 * _tmp33)) - (_tmp11 * _tmp34)) - (atoms[0] * _tmp35)) - (atoms[1] * _tmp35)) - _tmp16) - (m * _tmp15)) - _tmp36) - (m * _tmp36)) - (_tmp6 * (atoms[0] * _tmp37))) - (_tmp6 * (atoms[1] * _tmp37))) - (_tmp6 * (atoms[1] * _tmp10))) - (m * (atoms[0] * _tmp38))) - (m * (atoms[1] * _tmp38))) - (m * (atoms[0] * (H1 * (E * (_tmp0 * (Ca * _tmp3))))))) - (_tmp6 * (atoms[0] * (H1 * (E * (_tmp0 * (Ca * (_tmp2 * Scalar(5.0))))))))) / (b1 * (D * ((_tmp39 * _tmp39) * (_tmp40 * _tmp40))));
 }
 
 // The atoms of waviness_pressure_beyond_half_top_other_cauchy_edge, at the point's Cauchy argument y.
@@ -368,33 +355,33 @@ inline void waviness_pressure_beyond_half_top_other_cauchy_edge_atoms(const Scal
 inline constexpr int waviness_pressure_beyond_half_top_other_cauchy_edge_atoms_outputs = 3;
 
 // Part of the pressure: the same in J'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_top_other_cauchy_edge_atoms.
-// Total ops: 169 (31 add, 106 mul, 30 div, 1 sqrt, 1 neg), 22 temporaries
+// Total ops: 143 (31 add, 106 mul, 4 div, 1 sqrt, 1 neg), 22 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_top_other_cauchy_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = _tmp0 * Scalar(3.0);
-  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
-  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp4 = b1 * (D * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3)));
-  const Scalar _tmp5 = Cx * Cx;
-  const Scalar _tmp6 = atoms[0] * (H1 * (E * (_tmp5 * _tmp1)));
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = _tmp0 * Scalar(2.0);
-  const Scalar _tmp9 = m * _tmp7;
-  const Scalar _tmp10 = Cx * _tmp5;
-  const Scalar _tmp11 = atoms[0] * (H1 * (E * (_tmp0 * _tmp10)));
-  const Scalar _tmp12 = atoms[0] * (H1 * (E * (_tmp0 * _tmp5)));
-  const Scalar _tmp13 = Ca * _tmp8;
-  const Scalar _tmp14 = atoms[1] * (H1 * (E * (_tmp5 * _tmp13)));
+  const Scalar _tmp2 = Cx * Cx;
+  const Scalar _tmp3 = atoms[0] * (H1 * (E * (_tmp2 * _tmp1)));
+  const Scalar _tmp4 = m * m;
+  const Scalar _tmp5 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp6 = m * _tmp4;
+  const Scalar _tmp7 = Cx * _tmp2;
+  const Scalar _tmp8 = atoms[0] * (H1 * (E * (_tmp0 * _tmp7)));
+  const Scalar _tmp9 = atoms[0] * (H1 * (E * (_tmp0 * _tmp2)));
+  const Scalar _tmp10 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp11 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp12 = b1 * (D * ((_tmp10 * _tmp10) * (_tmp11 * _tmp11)));
+  const Scalar _tmp13 = Ca * _tmp5;
+  const Scalar _tmp14 = atoms[1] * (H1 * (E * (_tmp2 * _tmp13)));
   const Scalar _tmp15 = Ca * _tmp0;
   const Scalar _tmp16 = atoms[1] * (H1 * (E * _tmp15));
-  const Scalar _tmp17 = atoms[1] * (H1 * (E * (_tmp10 * _tmp15)));
-  const Scalar _tmp18 = atoms[1] * (H1 * (E * (_tmp5 * _tmp15)));
+  const Scalar _tmp17 = atoms[1] * (H1 * (E * (_tmp7 * _tmp15)));
+  const Scalar _tmp18 = atoms[1] * (H1 * (E * (_tmp2 * _tmp15)));
   const Scalar _tmp19 = _tmp0 * (Ca * Ca);
   const Scalar _tmp20 = atoms[2] * (Sx * (H1 * (E * _tmp19)));
   const Scalar _tmp21 = atoms[2] * (Sx * (H1 * (E * (Cx * _tmp19))));
-  return (Sa * (((((m * (atoms[0] * (H1 * (E * (Cx * _tmp1))))) / _tmp4) + (((m * _tmp6) / _tmp4) + (((_tmp7 * _tmp6) / _tmp4) + (((_tmp7 * (atoms[0] * (H1 * (E * (Cx * _tmp8))))) / _tmp4) + (((atoms[0] * (H1 * (E * (Cx * _tmp0)))) / _tmp4) + (((_tmp9 * _tmp11) / _tmp4) + (((_tmp7 * _tmp11) / _tmp4) + (((_tmp9 * _tmp12) / _tmp4) + (_tmp12 / _tmp4))))))))) * Sa) + ((((m * (atoms[1] * (H1 * (E * (Cx * (Ca * _tmp1)))))) / _tmp4) + (((_tmp7 * (atoms[1] * (H1 * (E * _tmp13)))) / _tmp4) + (((_tmp7 * (atoms[1] * (H1 * (E * (Cx * _tmp13))))) / _tmp4) + (((m * _tmp14) / _tmp4) + ((_tmp14 / _tmp4) + (((m * _tmp16) / _tmp4) + (((atoms[1] * (H1 * (E * (Cx * _tmp15)))) / _tmp4) + (((_tmp9 * _tmp17) / _tmp4) + (((_tmp7 * _tmp17) / _tmp4) + (((_tmp7 * _tmp18) / _tmp4) + ((_tmp9 * _tmp18) / _tmp4))))))))))) - (_tmp16 / _tmp4)))) + (((((((m * _tmp20) / _tmp4) + (((m * _tmp21) / _tmp4) + (((_tmp7 * _tmp21) / _tmp4) + ((_tmp7 * _tmp20) / _tmp4)))) - ((_tmp9 * _tmp21) / _tmp4)) - ((_tmp9 * _tmp20) / _tmp4)) - (_tmp21 / _tmp4)) - (_tmp20 / _tmp4));
+  return (Sa * (((((m * (atoms[0] * (H1 * (E * (Cx * _tmp1))))) + ((m * _tmp3) + ((_tmp4 * _tmp3) + ((_tmp4 * (atoms[0] * (H1 * (E * (Cx * _tmp5))))) + ((atoms[0] * (H1 * (E * (Cx * _tmp0)))) + ((_tmp6 * _tmp8) + ((_tmp4 * _tmp8) + (_tmp9 + (_tmp6 * _tmp9))))))))) / _tmp12) * Sa) + ((((m * (atoms[1] * (H1 * (E * (Cx * (Ca * _tmp1)))))) + ((_tmp4 * (atoms[1] * (H1 * (E * _tmp13)))) + ((_tmp4 * (atoms[1] * (H1 * (E * (Cx * _tmp13))))) + ((m * _tmp14) + (_tmp14 + ((m * _tmp16) + ((atoms[1] * (H1 * (E * (Cx * _tmp15)))) + ((_tmp6 * _tmp17) + ((_tmp4 * _tmp17) + ((_tmp4 * _tmp18) + (_tmp6 * _tmp18))))))))))) - _tmp16) / _tmp12))) + (((((((m * _tmp20) + ((m * _tmp21) + ((_tmp4 * _tmp21) + (_tmp4 * _tmp20)))) - (_tmp6 * _tmp21)) - (_tmp6 * _tmp20)) - _tmp21) - _tmp20) / _tmp12);
 }
 
 // The atoms of waviness_pressure_beyond_half_top_other, of the zone.
@@ -410,27 +397,26 @@ inline void waviness_pressure_beyond_half_top_other_atoms(const Scalar& /*E*/, c
 inline constexpr int waviness_pressure_beyond_half_top_other_atoms_outputs = 2;
 
 // Part of the pressure: the other piece's moment with the other branch's value at x apart (I_{j,l}), from waviness_pressure_beyond_half_top_other_atoms.
-// Total ops: 102 (23 add, 55 mul, 22 div, 1 sqrt, 1 neg), 16 temporaries
+// Total ops: 82 (23 add, 55 mul, 2 div, 1 sqrt, 1 neg), 15 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_top_other(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = atoms[0] * (H1 * (_tmp0 * E));
-  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
-  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
-  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
-  const Scalar _tmp5 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
-  const Scalar _tmp6 = Ca * _tmp0;
-  const Scalar _tmp7 = H1 * (E * _tmp6);
-  const Scalar _tmp8 = atoms[1] * _tmp7;
-  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
-  const Scalar _tmp10 = m * m;
-  const Scalar _tmp11 = m * _tmp10;
-  const Scalar _tmp12 = atoms[0] * _tmp7;
-  const Scalar _tmp13 = Cx * Cx;
-  const Scalar _tmp14 = atoms[0] * (H1 * (E * (_tmp0 * _tmp13)));
-  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp13 * _tmp6)));
-  return (((((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + (((m * _tmp8) / _tmp4) + (((m * _tmp9) / _tmp4) + (((_tmp11 * _tmp5) / _tmp4) + (((_tmp11 * _tmp12) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp10 * _tmp12) / _tmp4) + (((_tmp10 * _tmp9) / _tmp4) + (((_tmp10 * _tmp14) / _tmp4) + ((_tmp14 * _tmp11) / _tmp4))))))))))) - ((_tmp10 * _tmp15) / _tmp4)) - ((_tmp11 * _tmp15) / _tmp4)) - ((_tmp10 * _tmp5) / _tmp4)) - ((_tmp11 * _tmp9) / _tmp4)) - ((_tmp11 * _tmp8) / _tmp4)) - (_tmp9 / _tmp4)) - (_tmp8 / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp10 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp4);
+  const Scalar _tmp2 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
+  const Scalar _tmp3 = Ca * _tmp0;
+  const Scalar _tmp4 = H1 * (E * _tmp3);
+  const Scalar _tmp5 = atoms[1] * _tmp4;
+  const Scalar _tmp6 = atoms[1] * (H1 * (E * (Cx * _tmp3)));
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = m * _tmp7;
+  const Scalar _tmp9 = atoms[0] * _tmp4;
+  const Scalar _tmp10 = Cx * Cx;
+  const Scalar _tmp11 = atoms[0] * (H1 * (E * (_tmp0 * _tmp10)));
+  const Scalar _tmp12 = atoms[0] * (H1 * (E * (_tmp10 * _tmp3)));
+  const Scalar _tmp13 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp14 = (Cx * m) - Scalar(1.0);
+  return (((((((((((_tmp1 + (_tmp2 + ((m * _tmp5) + ((m * _tmp6) + ((_tmp8 * _tmp2) + ((_tmp8 * _tmp9) + ((_tmp7 * _tmp5) + ((_tmp7 * _tmp9) + ((_tmp7 * _tmp6) + ((_tmp7 * _tmp11) + (_tmp11 * _tmp8))))))))))) - (_tmp7 * _tmp12)) - (_tmp8 * _tmp12)) - (_tmp7 * _tmp2)) - (_tmp8 * _tmp6)) - (_tmp8 * _tmp5)) - _tmp6) - _tmp5) - (m * _tmp2)) - (m * _tmp1)) - (_tmp7 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / (b1 * ((_tmp13 * _tmp13) * (_tmp14 * _tmp14)));
 }
 
 // The atoms of waviness_pressure_beyond_half_top_other_edge, of the zone.
@@ -446,23 +432,22 @@ inline void waviness_pressure_beyond_half_top_other_edge_atoms(const Scalar& /*E
 inline constexpr int waviness_pressure_beyond_half_top_other_edge_atoms_outputs = 2;
 
 // Part of the pressure: the same in I'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_top_other_edge_atoms.
-// Total ops: 89 (19 add, 50 mul, 18 div, 1 sqrt, 1 neg), 12 temporaries
+// Total ops: 73 (19 add, 50 mul, 2 div, 1 sqrt, 1 neg), 11 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_top_other_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
-  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
-  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
-  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
-  const Scalar _tmp5 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
-  const Scalar _tmp6 = Ca * _tmp0;
-  const Scalar _tmp7 = atoms[1] * (H1 * (E * _tmp6));
-  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
-  const Scalar _tmp9 = m * m;
-  const Scalar _tmp10 = m * _tmp9;
-  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  return (((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + ((_tmp7 / _tmp4) + ((_tmp8 / _tmp4) + (((_tmp10 * _tmp5) / _tmp4) + (((_tmp10 * _tmp7) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp9 * _tmp11) / _tmp4) + ((_tmp11 * _tmp10) / _tmp4))))))))) - ((_tmp9 * _tmp8) / _tmp4)) - ((_tmp9 * _tmp7) / _tmp4)) - ((_tmp9 * _tmp5) / _tmp4)) - ((m * _tmp8) / _tmp4)) - ((m * _tmp7) / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp9 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp4);
+  const Scalar _tmp2 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
+  const Scalar _tmp3 = Ca * _tmp0;
+  const Scalar _tmp4 = atoms[1] * (H1 * (E * _tmp3));
+  const Scalar _tmp5 = atoms[1] * (H1 * (E * (Cx * _tmp3)));
+  const Scalar _tmp6 = m * m;
+  const Scalar _tmp7 = m * _tmp6;
+  const Scalar _tmp8 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp9 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp10 = (Cx * m) - Scalar(1.0);
+  return (((((((((_tmp1 + (_tmp2 + (_tmp4 + (_tmp5 + ((_tmp7 * _tmp2) + ((_tmp7 * _tmp4) + ((_tmp7 * _tmp5) + ((_tmp6 * _tmp8) + (_tmp8 * _tmp7))))))))) - (_tmp6 * _tmp5)) - (_tmp6 * _tmp4)) - (_tmp6 * _tmp2)) - (m * _tmp5)) - (m * _tmp4)) - (m * _tmp2)) - (m * _tmp1)) - (_tmp6 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0)))))))) / (b1 * ((_tmp9 * _tmp9) * (_tmp10 * _tmp10)));
 }
 
 // The atoms of waviness_pressure_beyond_half_top_jump, at the point's Cauchy argument y.
@@ -527,27 +512,26 @@ inline void waviness_pressure_beyond_half_flank_own_atoms(const Scalar& /*E*/, c
 inline constexpr int waviness_pressure_beyond_half_flank_own_atoms_outputs = 2;
 
 // Part of the pressure: the own piece's moment (I_{j,l}), from waviness_pressure_beyond_half_flank_own_atoms.
-// Total ops: 102 (23 add, 55 mul, 22 div, 1 sqrt, 1 neg), 16 temporaries
+// Total ops: 82 (23 add, 55 mul, 2 div, 1 sqrt, 1 neg), 15 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_flank_own(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = atoms[0] * (H1 * (_tmp0 * E));
-  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
-  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
-  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
-  const Scalar _tmp5 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
-  const Scalar _tmp6 = Ca * _tmp0;
-  const Scalar _tmp7 = H1 * (E * _tmp6);
-  const Scalar _tmp8 = atoms[1] * _tmp7;
-  const Scalar _tmp9 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
-  const Scalar _tmp10 = m * m;
-  const Scalar _tmp11 = m * _tmp10;
-  const Scalar _tmp12 = atoms[0] * _tmp7;
-  const Scalar _tmp13 = Cx * Cx;
-  const Scalar _tmp14 = atoms[0] * (H1 * (E * (_tmp0 * _tmp13)));
-  const Scalar _tmp15 = atoms[0] * (H1 * (E * (_tmp13 * _tmp6)));
-  return (((((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + (((m * _tmp8) / _tmp4) + (((m * _tmp9) / _tmp4) + (((_tmp11 * _tmp5) / _tmp4) + (((_tmp11 * _tmp12) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp10 * _tmp12) / _tmp4) + (((_tmp10 * _tmp9) / _tmp4) + (((_tmp10 * _tmp14) / _tmp4) + ((_tmp14 * _tmp11) / _tmp4))))))))))) - ((_tmp10 * _tmp15) / _tmp4)) - ((_tmp11 * _tmp15) / _tmp4)) - ((_tmp10 * _tmp5) / _tmp4)) - ((_tmp11 * _tmp9) / _tmp4)) - ((_tmp11 * _tmp8) / _tmp4)) - (_tmp9 / _tmp4)) - (_tmp8 / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp10 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0)))))) / _tmp4);
+  const Scalar _tmp2 = atoms[0] * (H1 * (E * (Cx * _tmp0)));
+  const Scalar _tmp3 = Ca * _tmp0;
+  const Scalar _tmp4 = H1 * (E * _tmp3);
+  const Scalar _tmp5 = atoms[1] * _tmp4;
+  const Scalar _tmp6 = atoms[1] * (H1 * (E * (Cx * _tmp3)));
+  const Scalar _tmp7 = m * m;
+  const Scalar _tmp8 = m * _tmp7;
+  const Scalar _tmp9 = atoms[0] * _tmp4;
+  const Scalar _tmp10 = Cx * Cx;
+  const Scalar _tmp11 = atoms[0] * (H1 * (E * (_tmp0 * _tmp10)));
+  const Scalar _tmp12 = atoms[0] * (H1 * (E * (_tmp10 * _tmp3)));
+  const Scalar _tmp13 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp14 = (Cx * m) - Scalar(1.0);
+  return (((((((((((_tmp1 + (_tmp2 + ((m * _tmp5) + ((m * _tmp6) + ((_tmp8 * _tmp2) + ((_tmp8 * _tmp9) + ((_tmp7 * _tmp5) + ((_tmp7 * _tmp9) + ((_tmp7 * _tmp6) + ((_tmp7 * _tmp11) + (_tmp11 * _tmp8))))))))))) - (_tmp7 * _tmp12)) - (_tmp8 * _tmp12)) - (_tmp7 * _tmp2)) - (_tmp8 * _tmp6)) - (_tmp8 * _tmp5)) - _tmp6) - _tmp5) - (m * _tmp2)) - (m * _tmp1)) - (_tmp7 * (atoms[0] * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / (b1 * ((_tmp13 * _tmp13) * (_tmp14 * _tmp14)));
 }
 
 // The atoms of waviness_pressure_beyond_half_flank_own_edge, of the zone.
@@ -563,23 +547,22 @@ inline void waviness_pressure_beyond_half_flank_own_edge_atoms(const Scalar& /*E
 inline constexpr int waviness_pressure_beyond_half_flank_own_edge_atoms_outputs = 2;
 
 // Part of the pressure: the own piece's moment in I'_{j,l} (for own_argument < 0), from waviness_pressure_beyond_half_flank_own_edge_atoms.
-// Total ops: 89 (19 add, 50 mul, 18 div, 1 sqrt, 1 neg), 12 temporaries
+// Total ops: 73 (19 add, 50 mul, 2 div, 1 sqrt, 1 neg), 11 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_flank_own_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-((Ca * D) / (Scalar(1.0) + Cx)));
   const Scalar _tmp1 = atoms[0] * (Sa * (H1 * (_tmp0 * E)));
-  const Scalar _tmp2 = (Ca * m) - Scalar(1.0);
-  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
-  const Scalar _tmp4 = b1 * ((_tmp2 * _tmp2) * (_tmp3 * _tmp3));
-  const Scalar _tmp5 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
-  const Scalar _tmp6 = Ca * _tmp0;
-  const Scalar _tmp7 = atoms[1] * (H1 * (E * _tmp6));
-  const Scalar _tmp8 = atoms[1] * (H1 * (E * (Cx * _tmp6)));
-  const Scalar _tmp9 = m * m;
-  const Scalar _tmp10 = m * _tmp9;
-  const Scalar _tmp11 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  return (((((((((_tmp1 / _tmp4) + ((_tmp5 / _tmp4) + ((_tmp7 / _tmp4) + ((_tmp8 / _tmp4) + (((_tmp10 * _tmp5) / _tmp4) + (((_tmp10 * _tmp7) / _tmp4) + (((_tmp10 * _tmp8) / _tmp4) + (((_tmp9 * _tmp11) / _tmp4) + ((_tmp11 * _tmp10) / _tmp4))))))))) - ((_tmp9 * _tmp8) / _tmp4)) - ((_tmp9 * _tmp7) / _tmp4)) - ((_tmp9 * _tmp5) / _tmp4)) - ((m * _tmp8) / _tmp4)) - ((m * _tmp7) / _tmp4)) - ((m * _tmp5) / _tmp4)) - ((m * _tmp1) / _tmp4)) - ((_tmp9 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0))))))) / _tmp4);
+  const Scalar _tmp2 = atoms[0] * (Sa * (H1 * (E * (Cx * _tmp0))));
+  const Scalar _tmp3 = Ca * _tmp0;
+  const Scalar _tmp4 = atoms[1] * (H1 * (E * _tmp3));
+  const Scalar _tmp5 = atoms[1] * (H1 * (E * (Cx * _tmp3)));
+  const Scalar _tmp6 = m * m;
+  const Scalar _tmp7 = m * _tmp6;
+  const Scalar _tmp8 = atoms[0] * (Sa * (H1 * (E * (_tmp0 * (Cx * Cx)))));
+  const Scalar _tmp9 = (Ca * m) - Scalar(1.0);
+  const Scalar _tmp10 = (Cx * m) - Scalar(1.0);
+  return (((((((((_tmp1 + (_tmp2 + (_tmp4 + (_tmp5 + ((_tmp7 * _tmp2) + ((_tmp7 * _tmp4) + ((_tmp7 * _tmp5) + ((_tmp6 * _tmp8) + (_tmp8 * _tmp7))))))))) - (_tmp6 * _tmp5)) - (_tmp6 * _tmp4)) - (_tmp6 * _tmp2)) - (m * _tmp5)) - (m * _tmp4)) - (m * _tmp2)) - (m * _tmp1)) - (_tmp6 * (atoms[0] * (Sa * (H1 * (E * (_tmp0 * Scalar(2.0)))))))) / (b1 * ((_tmp9 * _tmp9) * (_tmp10 * _tmp10)));
 }
 
 // The atoms of waviness_pressure_beyond_half_flank_other_cauchy, at the point's Cauchy argument y.
@@ -598,45 +581,41 @@ inline constexpr int waviness_pressure_beyond_half_flank_other_cauchy_atoms_outp
 
 // Part of the pressure: the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the
 // other branch's pole, where _other + _jump cancel, from waviness_pressure_beyond_half_flank_other_cauchy_atoms.
-// Total ops: 147 (36 add, 74 mul, 35 div, 1 sqrt, 1 neg), 34 temporaries
+// Total ops: 117 (36 add, 74 mul, 5 div, 1 sqrt, 1 neg), 30 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_flank_other_cauchy(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
-  const Scalar _tmp0 = Cx * Cx;
-  const Scalar _tmp1 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp2 = H1 * (E * (_tmp0 * (_tmp1 * Scalar(4.0))));
-  const Scalar _tmp3 = (Cx * m) - Scalar(1.0);
-  const Scalar _tmp4 = _tmp3 * _tmp3;
-  const Scalar _tmp5 = _tmp4 * (Scalar(1.0) + m);
-  const Scalar _tmp6 = b1 * (Sx * _tmp5);
-  const Scalar _tmp7 = _tmp1 * Scalar(2.0);
-  const Scalar _tmp8 = H1 * (E * (Cx * _tmp7));
-  const Scalar _tmp9 = m * (atoms[1] * _tmp8);
-  const Scalar _tmp10 = m * (atoms[2] * _tmp8);
-  const Scalar _tmp11 = b1 * (Sx * (_tmp5 * (Ca * Ca)));
-  const Scalar _tmp12 = H1 * (E * (_tmp0 * _tmp7));
-  const Scalar _tmp13 = H1 * (E * _tmp7);
-  const Scalar _tmp14 = b1 * (Sx * (Ca * _tmp5));
-  const Scalar _tmp15 = H1 * (_tmp1 * E);
-  const Scalar _tmp16 = _tmp15 * atoms[0];
-  const Scalar _tmp17 = _tmp4 * b1;
-  const Scalar _tmp18 = H1 * (E * (Cx * _tmp1));
-  const Scalar _tmp19 = _tmp18 * atoms[0];
-  const Scalar _tmp20 = m * m;
-  const Scalar _tmp21 = atoms[2] * _tmp15;
-  const Scalar _tmp22 = H1 * (E * (_tmp1 * _tmp0));
-  const Scalar _tmp23 = _tmp20 * (atoms[1] * _tmp22);
-  const Scalar _tmp24 = atoms[2] * _tmp18;
-  const Scalar _tmp25 = atoms[1] * _tmp18;
-  const Scalar _tmp26 = H1 * (E * (_tmp1 * (Cx * _tmp0)));
-  const Scalar _tmp27 = _tmp20 * (atoms[2] * _tmp26);
-  const Scalar _tmp28 = _tmp20 * (atoms[1] * _tmp26);
-  const Scalar _tmp29 = _tmp22 * atoms[2];
-  const Scalar _tmp30 = _tmp20 * _tmp29;
-  const Scalar _tmp31 = atoms[1] * _tmp15;
-  const Scalar _tmp32 = atoms[1] * _tmp13;
-  const Scalar _tmp33 = m * _tmp32;
-  return (((((((((((((((((m * (atoms[1] * _tmp2)) / _tmp6) + ((_tmp9 / _tmp6) + ((_tmp10 / _tmp11) + (((m * (atoms[2] * _tmp12)) / _tmp11) + (((m * (atoms[2] * _tmp13)) / _tmp14) + (((atoms[1] * _tmp12) / _tmp14) + (((m * _tmp16) / _tmp17) + ((_tmp16 / _tmp17) + (((m * _tmp19) / _tmp17) + ((_tmp19 / _tmp17) + (((_tmp20 * _tmp21) / _tmp6) + ((_tmp23 / _tmp6) + ((_tmp21 / _tmp14) + ((_tmp24 / _tmp14) + ((_tmp25 / _tmp14) + ((_tmp27 / _tmp14) + ((_tmp28 / _tmp14) + ((_tmp23 / _tmp14) + (_tmp30 / _tmp14))))))))))))))))))) - (_tmp31 / _tmp14)) - (_tmp30 / _tmp11)) - (_tmp29 / _tmp11)) - (_tmp27 / _tmp11)) - (_tmp24 / _tmp11)) - (_tmp30 / _tmp6)) - (_tmp28 / _tmp6)) - (_tmp25 / _tmp6)) - (_tmp31 / _tmp6)) - (_tmp9 / _tmp14)) - (_tmp10 / _tmp14)) - (_tmp33 / _tmp14)) - ((_tmp20 * _tmp32) / _tmp6)) - (_tmp33 / _tmp6)) - ((m * (atoms[2] * _tmp2)) / _tmp14);
+  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
+  const Scalar _tmp1 = _tmp0 * Scalar(2.0);
+  const Scalar _tmp2 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp3 = m * (atoms[2] * _tmp2);
+  const Scalar _tmp4 = Cx * Cx;
+  const Scalar _tmp5 = H1 * (E * (_tmp4 * _tmp1));
+  const Scalar _tmp6 = m * m;
+  const Scalar _tmp7 = H1 * (E * (_tmp0 * _tmp4));
+  const Scalar _tmp8 = _tmp7 * atoms[2];
+  const Scalar _tmp9 = _tmp6 * _tmp8;
+  const Scalar _tmp10 = H1 * (E * (_tmp0 * (Cx * _tmp4)));
+  const Scalar _tmp11 = _tmp6 * (atoms[2] * _tmp10);
+  const Scalar _tmp12 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp13 = atoms[2] * _tmp12;
+  const Scalar _tmp14 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp15 = _tmp14 * _tmp14;
+  const Scalar _tmp16 = _tmp15 * (Scalar(1.0) + m);
+  const Scalar _tmp17 = H1 * (_tmp0 * E);
+  const Scalar _tmp18 = _tmp17 * atoms[0];
+  const Scalar _tmp19 = _tmp12 * atoms[0];
+  const Scalar _tmp20 = H1 * (E * _tmp1);
+  const Scalar _tmp21 = atoms[2] * _tmp17;
+  const Scalar _tmp22 = atoms[1] * _tmp12;
+  const Scalar _tmp23 = _tmp6 * (atoms[1] * _tmp10);
+  const Scalar _tmp24 = _tmp6 * (atoms[1] * _tmp7);
+  const Scalar _tmp25 = atoms[1] * _tmp17;
+  const Scalar _tmp26 = m * (atoms[1] * _tmp2);
+  const Scalar _tmp27 = atoms[1] * _tmp20;
+  const Scalar _tmp28 = m * _tmp27;
+  const Scalar _tmp29 = H1 * (E * (_tmp4 * (_tmp0 * Scalar(4.0))));
+  return ((((((_tmp3 + (m * (atoms[2] * _tmp5))) - _tmp9) - _tmp8) - _tmp11) - _tmp13) / (b1 * (Sx * (_tmp16 * (Ca * Ca))))) + ((((m * _tmp18) + (_tmp18 + (_tmp19 + (m * _tmp19)))) / (_tmp15 * b1)) + (((((((((m * (atoms[2] * _tmp20)) + ((atoms[1] * _tmp5) + (_tmp21 + (_tmp13 + (_tmp22 + (_tmp11 + (_tmp23 + (_tmp24 + _tmp9)))))))) - _tmp25) - _tmp26) - _tmp3) - _tmp28) - (m * (atoms[2] * _tmp29))) / (b1 * (Sx * (Ca * _tmp16)))) + (((((((((m * (atoms[1] * _tmp29)) + (_tmp26 + (_tmp24 + (_tmp6 * _tmp21)))) - _tmp9) - _tmp23) - _tmp22) - _tmp25) - (_tmp6 * _tmp27)) - _tmp28) / (b1 * (Sx * _tmp16)))));
 }
 
 // The atoms of waviness_pressure_beyond_half_flank_other_cauchy_edge, at the point's Cauchy argument y.
@@ -654,7 +633,7 @@ inline void waviness_pressure_beyond_half_flank_other_cauchy_edge_atoms(const Sc
 inline constexpr int waviness_pressure_beyond_half_flank_other_cauchy_edge_atoms_outputs = 3;
 
 // Part of the pressure: the same in J'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_flank_other_cauchy_edge_atoms.
-// Total ops: 163 (36 add, 90 mul, 35 div, 1 sqrt, 1 neg), 29 temporaries
+// Total ops: 135 (36 add, 90 mul, 7 div, 1 sqrt, 1 neg), 28 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_flank_other_cauchy_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& Sx, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
@@ -662,32 +641,31 @@ inline Scalar waviness_pressure_beyond_half_flank_other_cauchy_edge(const Scalar
   const Scalar _tmp1 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp2 = _tmp1 * Scalar(2.0);
   const Scalar _tmp3 = H1 * (E * (_tmp0 * _tmp2));
-  const Scalar _tmp4 = (Cx * m) - Scalar(1.0);
-  const Scalar _tmp5 = (_tmp4 * _tmp4) * (Scalar(1.0) + m);
-  const Scalar _tmp6 = b1 * (Sx * ((Ca * Ca) * _tmp5));
-  const Scalar _tmp7 = H1 * (E * (Cx * _tmp2));
-  const Scalar _tmp8 = m * m;
-  const Scalar _tmp9 = H1 * (E * (_tmp1 * _tmp0));
-  const Scalar _tmp10 = atoms[0] * _tmp9;
-  const Scalar _tmp11 = Cx * _tmp0;
-  const Scalar _tmp12 = H1 * (E * (_tmp1 * _tmp11));
-  const Scalar _tmp13 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp4 = H1 * (E * (Cx * _tmp2));
+  const Scalar _tmp5 = m * m;
+  const Scalar _tmp6 = H1 * (E * (_tmp1 * _tmp0));
+  const Scalar _tmp7 = atoms[0] * _tmp6;
+  const Scalar _tmp8 = Cx * _tmp0;
+  const Scalar _tmp9 = H1 * (E * (_tmp1 * _tmp8));
+  const Scalar _tmp10 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp11 = (Cx * m) - Scalar(1.0);
+  const Scalar _tmp12 = (_tmp11 * _tmp11) * (Scalar(1.0) + m);
+  const Scalar _tmp13 = b1 * (Sx * ((Ca * Ca) * _tmp12));
   const Scalar _tmp14 = _tmp1 * Scalar(4.0);
   const Scalar _tmp15 = H1 * (E * (_tmp0 * _tmp14));
   const Scalar _tmp16 = m * (atoms[1] * _tmp15);
-  const Scalar _tmp17 = b1 * (Sx * (Ca * _tmp5));
-  const Scalar _tmp18 = _tmp7 * atoms[1];
-  const Scalar _tmp19 = _tmp3 * atoms[1];
-  const Scalar _tmp20 = H1 * (_tmp1 * E);
-  const Scalar _tmp21 = H1 * (E * _tmp2);
-  const Scalar _tmp22 = m * (_tmp7 * atoms[2]);
-  const Scalar _tmp23 = _tmp20 * atoms[2];
-  const Scalar _tmp24 = b1 * (Sx * _tmp5);
-  const Scalar _tmp25 = _tmp13 * atoms[2];
-  const Scalar _tmp26 = _tmp9 * atoms[2];
-  const Scalar _tmp27 = _tmp8 * _tmp26;
-  const Scalar _tmp28 = _tmp8 * (_tmp12 * atoms[2]);
-  return (Sa * (((((((((m * (atoms[0] * _tmp3)) / _tmp6) + ((m * (atoms[0] * _tmp7)) / _tmp6)) - ((_tmp8 * _tmp10) / _tmp6)) - (_tmp10 / _tmp6)) - ((_tmp8 * (atoms[0] * _tmp12)) / _tmp6)) - ((atoms[0] * _tmp13) / _tmp6)) * Sa) + (((((((((_tmp16 / _tmp17) + ((_tmp18 / _tmp6) + (((_tmp8 * (atoms[1] * (H1 * (E * (_tmp11 * _tmp2))))) / _tmp6) + ((_tmp19 / _tmp6) + (((m * _tmp18) / _tmp17) + ((_tmp8 * _tmp19) / _tmp6)))))) - ((_tmp8 * (_tmp9 * atoms[1])) / _tmp17)) - ((_tmp8 * (_tmp12 * atoms[1])) / _tmp17)) - ((_tmp13 * atoms[1]) / _tmp17)) - ((atoms[1] * _tmp20) / _tmp17)) - ((m * (atoms[1] * _tmp21)) / _tmp17)) - (_tmp16 / _tmp6)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp14))))) / _tmp6)))) + (((((((((_tmp22 / _tmp6) + (((m * (_tmp3 * atoms[2])) / _tmp6) + (((m * (_tmp21 * atoms[2])) / _tmp17) + (((_tmp8 * _tmp23) / _tmp24) + ((_tmp23 / _tmp17) + ((_tmp25 / _tmp17) + ((_tmp27 / _tmp17) + (_tmp28 / _tmp17)))))))) - (_tmp27 / _tmp6)) - (_tmp26 / _tmp6)) - (_tmp28 / _tmp6)) - (_tmp25 / _tmp6)) - (_tmp27 / _tmp24)) - (_tmp22 / _tmp17)) - ((m * (_tmp15 * atoms[2])) / _tmp17));
+  const Scalar _tmp17 = _tmp4 * atoms[1];
+  const Scalar _tmp18 = H1 * (_tmp1 * E);
+  const Scalar _tmp19 = H1 * (E * _tmp2);
+  const Scalar _tmp20 = b1 * (Sx * (Ca * _tmp12));
+  const Scalar _tmp21 = _tmp3 * atoms[1];
+  const Scalar _tmp22 = m * (_tmp4 * atoms[2]);
+  const Scalar _tmp23 = _tmp6 * atoms[2];
+  const Scalar _tmp24 = _tmp5 * _tmp23;
+  const Scalar _tmp25 = _tmp5 * (_tmp9 * atoms[2]);
+  const Scalar _tmp26 = _tmp10 * atoms[2];
+  const Scalar _tmp27 = _tmp18 * atoms[2];
+  return (Sa * (((((((((m * (atoms[0] * _tmp3)) + (m * (atoms[0] * _tmp4))) - (_tmp5 * _tmp7)) - _tmp7) - (_tmp5 * (atoms[0] * _tmp9))) - (atoms[0] * _tmp10)) / _tmp13) * Sa) + ((((((((_tmp16 + (m * _tmp17)) - (_tmp5 * (_tmp6 * atoms[1]))) - (_tmp5 * (_tmp9 * atoms[1]))) - (_tmp10 * atoms[1])) - (atoms[1] * _tmp18)) - (m * (atoms[1] * _tmp19))) / _tmp20) + ((((_tmp17 + ((_tmp5 * (atoms[1] * (H1 * (E * (_tmp8 * _tmp2))))) + (_tmp21 + (_tmp5 * _tmp21)))) - _tmp16) - (m * (atoms[1] * (H1 * (E * (Cx * _tmp14)))))) / _tmp13)))) + (((((((_tmp22 + (m * (_tmp3 * atoms[2]))) - _tmp24) - _tmp23) - _tmp25) - _tmp26) / _tmp13) + ((((((m * (_tmp19 * atoms[2])) + (_tmp27 + (_tmp26 + (_tmp24 + _tmp25)))) - _tmp22) - (m * (_tmp15 * atoms[2]))) / _tmp20) + (((_tmp5 * _tmp27) - _tmp24) / (b1 * (Sx * _tmp12)))));
 }
 
 // The atoms of waviness_pressure_beyond_half_flank_other, of the zone.
@@ -703,27 +681,24 @@ inline void waviness_pressure_beyond_half_flank_other_atoms(const Scalar& /*E*/,
 inline constexpr int waviness_pressure_beyond_half_flank_other_atoms_outputs = 2;
 
 // Part of the pressure: the other piece's moment with the other branch's value at x apart (I_{j,l}), from waviness_pressure_beyond_half_flank_other_atoms.
-// Total ops: 67 (14 add, 38 mul, 13 div, 1 sqrt, 1 neg), 16 temporaries
+// Total ops: 58 (14 add, 38 mul, 4 div, 1 sqrt, 1 neg), 13 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_flank_other(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& /*Sa*/, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
-  const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
-  const Scalar _tmp1 = H1 * (_tmp0 * E);
-  const Scalar _tmp2 = atoms[0] * _tmp1;
-  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp4 = _tmp3 * _tmp3;
-  const Scalar _tmp5 = _tmp4 * b1;
-  const Scalar _tmp6 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp7 = atoms[0] * _tmp6;
-  const Scalar _tmp8 = m * m;
-  const Scalar _tmp9 = _tmp8 * (atoms[1] * (H1 * (E * (_tmp0 * (Cx * Cx)))));
-  const Scalar _tmp10 = _tmp4 * (Scalar(1.0) + m);
-  const Scalar _tmp11 = b1 * _tmp10;
-  const Scalar _tmp12 = b1 * (Ca * _tmp10);
-  const Scalar _tmp13 = atoms[1] * _tmp6;
-  const Scalar _tmp14 = atoms[1] * _tmp1;
-  const Scalar _tmp15 = _tmp0 * Scalar(2.0);
-  return (((((((((m * _tmp2) / _tmp5) + ((_tmp2 / _tmp5) + (((m * _tmp7) / _tmp5) + ((_tmp9 / _tmp11) + (_tmp7 / _tmp5))))) - (_tmp9 / _tmp12)) - ((_tmp8 * _tmp13) / _tmp12)) - (_tmp13 / _tmp12)) - (_tmp14 / _tmp12)) - ((_tmp8 * _tmp14) / _tmp11)) - ((m * (atoms[1] * (H1 * (E * (Cx * _tmp15))))) / _tmp12)) - ((m * (atoms[1] * (H1 * (E * _tmp15)))) / _tmp12);
+  const Scalar _tmp0 = m * m;
+  const Scalar _tmp1 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
+  const Scalar _tmp2 = _tmp0 * (atoms[1] * (H1 * (E * (_tmp1 * (Cx * Cx)))));
+  const Scalar _tmp3 = H1 * (_tmp1 * E);
+  const Scalar _tmp4 = atoms[1] * _tmp3;
+  const Scalar _tmp5 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp6 = _tmp5 * _tmp5;
+  const Scalar _tmp7 = _tmp6 * (Scalar(1.0) + m);
+  const Scalar _tmp8 = atoms[0] * _tmp3;
+  const Scalar _tmp9 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp10 = atoms[0] * _tmp9;
+  const Scalar _tmp11 = _tmp1 * Scalar(2.0);
+  const Scalar _tmp12 = atoms[1] * _tmp9;
+  return (((_tmp2 - (_tmp0 * _tmp4)) / (b1 * _tmp7)) + (((m * _tmp8) + (_tmp8 + (_tmp10 + (m * _tmp10)))) / (_tmp6 * b1))) - (((m * (atoms[1] * (H1 * (E * _tmp11)))) + ((m * (atoms[1] * (H1 * (E * (Cx * _tmp11))))) + (_tmp4 + (_tmp12 + (_tmp2 + (_tmp0 * _tmp12)))))) / (b1 * (Ca * _tmp7)));
 }
 
 // The atoms of waviness_pressure_beyond_half_flank_other_edge, of the zone.
@@ -739,27 +714,25 @@ inline void waviness_pressure_beyond_half_flank_other_edge_atoms(const Scalar& /
 inline constexpr int waviness_pressure_beyond_half_flank_other_edge_atoms_outputs = 2;
 
 // Part of the pressure: the same in I'_{j,l} (for other_argument < 0), from waviness_pressure_beyond_half_flank_other_edge_atoms.
-// Total ops: 80 (16 add, 47 mul, 15 div, 1 sqrt, 1 neg), 16 temporaries
+// Total ops: 68 (16 add, 47 mul, 3 div, 1 sqrt, 1 neg), 14 temporaries
 template <typename Scalar>
 inline Scalar waviness_pressure_beyond_half_flank_other_edge(const Scalar& E, const Scalar& H1, const Scalar& b1, const Scalar& m, const Scalar& Ca, const Scalar& Sa, const Scalar& Cx, const Scalar& /*Sx*/, const Scalar& D, const Scalar* atoms) {
   using std::sqrt;
   const Scalar _tmp0 = sqrt(-(D / ((Scalar(1.0) + Cx) * Ca)));
   const Scalar _tmp1 = _tmp0 * Scalar(2.0);
   const Scalar _tmp2 = H1 * (E * _tmp1);
-  const Scalar _tmp3 = Scalar(1.0) + (Cx * m);
-  const Scalar _tmp4 = (_tmp3 * _tmp3) * (Scalar(1.0) + m);
-  const Scalar _tmp5 = b1 * (Ca * _tmp4);
-  const Scalar _tmp6 = H1 * (E * (Cx * _tmp1));
-  const Scalar _tmp7 = m * m;
-  const Scalar _tmp8 = H1 * (_tmp0 * E);
-  const Scalar _tmp9 = atoms[1] * _tmp8;
-  const Scalar _tmp10 = b1 * _tmp4;
-  const Scalar _tmp11 = H1 * (E * (Cx * _tmp0));
-  const Scalar _tmp12 = atoms[1] * _tmp11;
-  const Scalar _tmp13 = H1 * (E * (_tmp0 * (Cx * Cx)));
-  const Scalar _tmp14 = _tmp7 * (atoms[1] * _tmp13);
-  const Scalar _tmp15 = atoms[0] * (_tmp11 * Sa);
-  return (((((((((m * (atoms[1] * _tmp2)) / _tmp5) + (((m * (atoms[1] * _tmp6)) / _tmp5) + (((_tmp7 * _tmp9) / _tmp10) + ((_tmp9 / _tmp5) + ((_tmp12 / _tmp5) + ((_tmp14 / _tmp5) + ((_tmp7 * _tmp12) / _tmp5))))))) - ((_tmp7 * (atoms[0] * (_tmp13 * Sa))) / _tmp5)) - ((_tmp7 * _tmp15) / _tmp5)) - (_tmp15 / _tmp5)) - ((atoms[0] * (_tmp8 * Sa)) / _tmp5)) - (_tmp14 / _tmp10)) - ((m * (atoms[0] * (Sa * _tmp6))) / _tmp5)) - ((m * (atoms[0] * (Sa * _tmp2))) / _tmp5);
+  const Scalar _tmp3 = H1 * (E * (Cx * _tmp1));
+  const Scalar _tmp4 = H1 * (_tmp0 * E);
+  const Scalar _tmp5 = atoms[1] * _tmp4;
+  const Scalar _tmp6 = H1 * (E * (Cx * _tmp0));
+  const Scalar _tmp7 = atoms[1] * _tmp6;
+  const Scalar _tmp8 = m * m;
+  const Scalar _tmp9 = H1 * (E * (_tmp0 * (Cx * Cx)));
+  const Scalar _tmp10 = _tmp8 * (atoms[1] * _tmp9);
+  const Scalar _tmp11 = atoms[0] * (_tmp6 * Sa);
+  const Scalar _tmp12 = Scalar(1.0) + (Cx * m);
+  const Scalar _tmp13 = (_tmp12 * _tmp12) * (Scalar(1.0) + m);
+  return (((((((((m * (atoms[1] * _tmp2)) + ((m * (atoms[1] * _tmp3)) + (_tmp5 + (_tmp7 + (_tmp10 + (_tmp8 * _tmp7)))))) - (_tmp8 * (atoms[0] * (_tmp9 * Sa)))) - (_tmp8 * _tmp11)) - _tmp11) - (atoms[0] * (_tmp4 * Sa))) - (m * (atoms[0] * (Sa * _tmp3)))) - (m * (atoms[0] * (Sa * _tmp2)))) / (b1 * (Ca * _tmp13))) + (((_tmp8 * _tmp5) - _tmp10) / (b1 * _tmp13));
 }
 
 // The atoms of waviness_pressure_beyond_half_flank_jump, at the point's Cauchy argument y.
