@@ -20,7 +20,7 @@ foreach(line IN LISTS lines)
   # Global or weak definitions (T, W, V, u); local ones (t, r, ...) cannot be shared.
   if(line MATCHES " [TWVu] (.*)$")
     set(symbol "${CMAKE_MATCH_1}")
-    if(NOT symbol MATCHES "^wavecontact::detail::(simd_pressure|simd_add_roughness_pressure)_avx(2|512)\\(")
+    if(NOT symbol MATCHES "^wavecontact::detail::(simd_pressure|simd_add_roughness_pressure|simd_point_angles)_avx(2|512)\\(")
       message(FATAL_ERROR "a SIMD unit exports ${symbol}:\n  ${line}")
     endif()
   endif()

@@ -30,7 +30,9 @@ CosinePair cosine_pair(double y, double b1) {
   const double r = y / b1;
   const double e = std::fma(-r, b1, y) / b1;
   const double half = sin_pi(r / 2);
-  const double slope = pi * sin_pi(r) * e;  // d cos(pi q)/dq = -pi sin(pi q)
+  // d cos(pi q)/dq = -pi sin(pi q), sin(pi q) = 2 sin(pi q/2) cos(pi q/2) (0 <= q <= 1): the
+  // correction is of the order of e, so the digits that 1 - half^2 loses as q -> 1 do not show.
+  const double slope = pi * 2 * half * std::sqrt(1 - half * half) * e;
   return {cos_pi(r) - slope, 2 * half * half + slope};
 }
 

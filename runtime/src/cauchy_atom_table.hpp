@@ -9,27 +9,32 @@
 #pragma once
 
 #include <functional>
-#include <map>
 #include <vector>
 
 namespace wavecontact::detail {
 
+// The most atoms of one part of the pressure beyond a change of branch (the emitted
+// <part>_atoms_outputs).
+inline constexpr int max_branch_atoms = 32;
+
 class CauchyAtomTable {
  public:
   using Atoms = std::function<void(double y, double one_plus_y, double* atoms)>;
-  static constexpr int nodes = 16;
+  static constexpr int nodes = 16;  // even
 
   CauchyAtomTable() = default;
   // The panels that the points' eta = log(1 + y) ask for, from atoms(expm1(eta), exp(eta), out)
-  // of `count` atoms at their nodes.
+  // of `count` <= max_branch_atoms atoms at their nodes.
   CauchyAtomTable(const Atoms& atoms, int count, const std::vector<double>& etas);
 
+  bool empty() const { return panels_.empty(); }
   // The atoms at eta into out, if a panel holds eta.
   bool evaluate(double eta, double* out) const;
 
  private:
   int count_ = 0;
-  std::map<long, std::vector<double>> panels_;  // panel k: the Chebyshev coefficients, atom by atom
+  long first_ = 0;  // the panel [first_ + i, first_ + i + 1] at i: its Chebyshev coefficients,
+  std::vector<std::vector<double>> panels_;  // node by node, the atoms interleaved (empty: none)
 };
 
 }  // namespace wavecontact::detail

@@ -23,19 +23,32 @@ BranchSide::BranchSide(BranchSideForms forms, double own_argument, double other_
   forms_.atoms(other_, 0, 1, other_atoms_.data());
 }
 
-double BranchSide::part_at_point(BranchPart part, const PointAngles& point, const double* y) const {
+double BranchSide::part_at_point(BranchPart part, const PointAngles& point) const {
+  double y[2];
+  forms_.cauchy_argument(point, y);
   Atoms atoms;
-  if (part != other_cauchy_ || !cauchy_table_.evaluate(std::log(y[1]), atoms.data())) {
-    forms_.atoms(part, y[0], y[1], atoms.data());
-  }
+  forms_.atoms(part, y[0], y[1], atoms.data());
   return forms_.part(part, point, atoms.data());
 }
 
-double BranchSide::cauchy_eta(const PointAngles& point, double other_over_own) const {
-  if (!(std::fabs(other_over_own) > 2)) return std::numeric_limits<double>::quiet_NaN();
+double BranchSide::cauchy_part(const PointAngles& point, double eta) const {
+  if (!cauchy_table_.empty()) {
+    Atoms atoms;
+    if (cauchy_table_.evaluate(std::isfinite(eta) ? eta : eta_at(point), atoms.data())) {
+      return forms_.part(other_cauchy_, point, atoms.data());
+    }
+  }
+  return part_at_point(other_cauchy_, point);
+}
+
+double BranchSide::eta_at(const PointAngles& point) const {
   double y[2];
   forms_.cauchy_argument(point, y);
   return std::log(y[1]);
+}
+
+double BranchSide::cauchy_eta(const PointAngles& point, double other_over_own) const {
+  return std::fabs(other_over_own) > 2 ? eta_at(point) : std::numeric_limits<double>::quiet_NaN();
 }
 
 void BranchSide::tabulate_cauchy(const std::vector<double>& etas) {
@@ -44,13 +57,11 @@ void BranchSide::tabulate_cauchy(const std::vector<double>& etas) {
                                   forms_.atom_counts[static_cast<int>(part)], etas);
 }
 
-double BranchSide::pressure(const PointAngles& point, double other_over_own, bool at_branch) const {
+double BranchSide::pressure(const PointAngles& point, double other_over_own, bool at_branch, double eta) const {
   const double own = forms_.part(own_, point, own_atoms_.data());
-  double y[2];
-  forms_.cauchy_argument(point, y);
-  if (std::fabs(other_over_own) > 2) return own + part_at_point(other_cauchy_, point, y);
+  if (std::fabs(other_over_own) > 2) return own + cauchy_part(point, eta);
   const double other = forms_.part(other_, point, other_atoms_.data());
-  return at_branch ? own + other : own + other + part_at_point(BranchPart::jump, point, y);
+  return at_branch ? own + other : own + other + part_at_point(BranchPart::jump, point);
 }
 
 }  // namespace wavecontact::detail

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "cauchy_atom_table.hpp"
@@ -18,9 +19,6 @@ namespace wavecontact::detail {
 // the own piece's moment, the other piece's with its Cauchy factor, or without it plus the
 // jump's term, in I_{j,l} or the edge basis.
 enum class BranchPart { own, own_edge, other_cauchy, other_cauchy_edge, other, other_edge, jump };
-
-// The most atoms of one part (the emitted <part>_atoms_outputs).
-inline constexpr int max_branch_atoms = 32;
 
 // The emitted forms of one side of the branch point, the zone (parameters, Ca, Sa) bound.
 struct BranchSideForms {
@@ -46,7 +44,9 @@ class BranchSide {
   // the Cauchy factor's logarithm would). At the branch point itself (at_branch) the jump's term
   // is its limit, 0 (the jump vanishes like s - beta^2, the Cauchy moment grows like
   // log|s - beta^2|).
-  double pressure(const PointAngles& point, double other_over_own, bool at_branch) const;
+  // With eta, the point's cauchy_eta where known already.
+  double pressure(const PointAngles& point, double other_over_own, bool at_branch,
+                  double eta = std::numeric_limits<double>::quiet_NaN()) const;
 
   // eta = log(1 + y) of a point where pressure() takes the Cauchy factor, NaN elsewhere.
   double cauchy_eta(const PointAngles& point, double other_over_own) const;
@@ -55,7 +55,11 @@ class BranchSide {
 
  private:
   using Atoms = std::array<double, max_branch_atoms>;
-  double part_at_point(BranchPart part, const PointAngles& point, const double* y) const;
+  double part_at_point(BranchPart part, const PointAngles& point) const;
+  // The other piece with its Cauchy factor, from the table where it holds the point's eta
+  // (computed here if NaN).
+  double cauchy_part(const PointAngles& point, double eta) const;
+  double eta_at(const PointAngles& point) const;
 
   BranchSideForms forms_;
   BranchPart own_, other_, other_cauchy_;

@@ -79,16 +79,19 @@ void BeyondHalfZone::pressures(double a, double b1, const double* x, double* p, 
   // The angles once per point (the point's side by the sign of Cx; none outside the zone), then
   // the Cauchy part's table from the points that take it, then the pressure.
   std::vector<PointAngles> points(count);
-  std::vector<double> etas(count);
+  std::vector<double> etas(count, std::numeric_limits<double>::quiet_NaN());
+  std::vector<unsigned char> inside(count, 0);
+  const bool simd = simd_pressure_available();
   for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
+    if (simd) simd_point_angles(b1, a, x + begin, end - begin, &points[begin], &inside[begin]);
     for (std::size_t i = begin; i < end; ++i) {
-      const double r = std::fabs(reduce_to_period(x[i], b1));
-      if (!(r < a)) {
-        etas[i] = std::numeric_limits<double>::quiet_NaN();
-        continue;
+      if (!simd) {
+        const double r = std::fabs(reduce_to_period(x[i], b1));
+        if (!(r < a)) continue;
+        inside[i] = 1;
+        points[i] = point_angles(r, a, b1);
       }
-      points[i] = point_angles(r, a, b1);
-      etas[i] = side(points[i]).cauchy_eta(points[i], other_over_own(m_, points[i].Cx));
+      if (inside[i]) etas[i] = side(points[i]).cauchy_eta(points[i], other_over_own(m_, points[i].Cx));
     }
   });
   std::vector<double> top_etas, flank_etas;
@@ -99,20 +102,14 @@ void BeyondHalfZone::pressures(double a, double b1, const double* x, double* p, 
   flank_.tabulate_cauchy(flank_etas);
   for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      const double r = std::fabs(reduce_to_period(x[i], b1));
-      p[i] = r < a ? pressure(points[i]) : 0.0;
+      p[i] = inside[i] ? side(points[i]).pressure(points[i], other_over_own(m_, points[i].Cx), points[i].Cx == 0, etas[i])
+                       : 0.0;
     }
   });
 }
 
-double BeyondHalfZone::pressure(const PointAngles& point) const { return pressure_on_side(m_, side(point), point); }
-
-double BeyondHalfZone::pressure_on_side(double m, const BranchSide& side, const PointAngles& point) {
-  return side.pressure(point, other_over_own(m, point.Cx), point.Cx == 0);
-}
-
 double pressure_beyond_half(const WavinessParams& p, const ZoneAngles& zone, const PointAngles& point) {
-  return BeyondHalfZone::pressure_on_side(p.m, side_of_zone(p, zone, point.Cx >= 0), point);
+  return side_of_zone(p, zone, point.Cx >= 0).pressure(point, other_over_own(p.m, point.Cx), point.Cx == 0);
 }
 
 }  // namespace wavecontact::detail

@@ -25,8 +25,6 @@ class BeyondHalfZone {
   // Cauchy part tabulated over the points that take it (BranchSide::tabulate_cauchy), in chunks
   // on threads from min_points on (parallel.hpp).
   void pressures(double a, double b1, const double* x, double* p, std::size_t count, std::size_t min_points);
-  double pressure(const PointAngles& point) const;
-  static double pressure_on_side(double m, const BranchSide& side, const PointAngles& point);
 
  private:
   const BranchSide& side(const PointAngles& point) const { return point.Cx >= 0 ? top_ : flank_; }

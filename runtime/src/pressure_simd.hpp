@@ -9,6 +9,7 @@
 
 #include <cstddef>
 
+#include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
 
 namespace wavecontact::detail {
@@ -41,6 +42,12 @@ void simd_pressure(const WavinessZone& zone, Form form, const double* x, double*
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
                                  std::size_t count);
 
+// The angle atoms of the points x[i], i < count (finite, any period), for a zone 0 < a <= b1,
+// from the bounded sines as the kernels take them: angles[i] where |x[i]| reduced to the period
+// is < a (inside[i] = 1), inside[i] = 0 elsewhere. As above.
+void simd_point_angles(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
+                       unsigned char* inside);
+
 // The same per ISA: call only where the CPU has it.
 void simd_pressure_avx2(const WavinessZone& zone, Form form, const double* x, double* p,
                         std::size_t count);
@@ -50,5 +57,9 @@ void simd_add_roughness_pressure_avx2(const RoughnessZone& zone, const double* x
                                       std::size_t count);
 void simd_add_roughness_pressure_avx512(const RoughnessZone& zone, const double* x, double* p,
                                         std::size_t count);
+void simd_point_angles_avx2(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
+                            unsigned char* inside);
+void simd_point_angles_avx512(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
+                              unsigned char* inside);
 
 }  // namespace wavecontact::detail

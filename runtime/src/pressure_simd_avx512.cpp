@@ -15,4 +15,9 @@ void simd_add_roughness_pressure_avx512(const RoughnessZone& zone, const double*
   add_roughness_kernel(zone, x, p, count);
 }
 
+void simd_point_angles_avx512(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
+                           unsigned char* inside) {
+  point_angles_kernel(b1, a, x, count, angles, inside);
+}
+
 }  // namespace wavecontact::detail

@@ -10,6 +10,7 @@
 
 #include "bounded_trigonometry.hpp"  // generated/
 #include "pressure_simd.hpp"
+#include "wavecontact/angles.hpp"
 #include "waviness.hpp"  // generated/
 
 namespace wavecontact::detail {
@@ -51,6 +52,61 @@ void compute_atoms(double b1, double a, double sin_a, double cos_a, const double
     out.Sx[k] = Sx;
     out.Cx[k] = w <= 0.25 ? sin_w : 1 - Sx;
     out.D[k] = 2 * sin_d * std::fma(sin_a, cos_d, -cos_a * sin_d);
+  }
+}
+
+// sin(pi t) for 0 <= t <= 1/2 given also c = 1/2 - t (each with its own relative rounding):
+// sin(pi t) = cos(pi c) = 1 - 2 sin^2(pi c/2) beyond t = 1/4, where it is >= 1/sqrt2.
+inline double sinpi_half(double t, double c) {
+  const double s = generated::sinpi_quarter(0.5 * c);
+  return t <= 0.25 ? generated::sinpi_quarter(t) : std::fma(-2 * s, s, 1.0);
+}
+
+// The atoms of angles.hpp for a block of points of any zone 0 < a <= b1 (the zone beyond b1/2,
+// where the arguments above exceed 1/4), by the same identities with the complements to 1/2
+// formed in physical units: with h = r/(2 b1), w = (b1 - 2r)/(2 b1), d = (a - r)/(2 b1) and
+// s = (a + r)/(2 b1),
+//   Sx = 2 sin^2(pi h) up to h = 1/4, beyond 2 - 2 sin^2(pi (b1 - r)/(2 b1)) (>= 1),
+//   Cx = sin(pi w) where |w| <= 1/4, else 1 - Sx (|Cx| >= 1/sqrt2),
+//   D  = cos x^ - cos a^ = 2 sin(pi s) sin(pi d), sin(pi s) = sin(pi (2 b1 - a - r)/(2 b1)) for s > 1/2,
+// each sine by sinpi_half. b1 - 2r, b1 - r, b1 - (a - r) and a + r - b1 are exact where they are
+// used (Sterbenz), a - r for r >= a/2: every atom keeps its relative accuracy, as angles.cpp's do
+// (point_angles: D from the same product, Cx with the rounding of x/b1 corrected to first order).
+void compute_atoms_any(double b1, double a, const double* x, Atoms& out) {
+  const double period = 2 * b1, inv_period = 0.5 / b1;
+  for (std::size_t k = 0; k < block; ++k) {
+    const double r = std::fabs(std::fma(-std::nearbyint(x[k] * inv_period), period, x[k]));
+    const double h = r * inv_period, w = (b1 - 2 * r) * inv_period;
+    const double sin_h = generated::sinpi_quarter(h), sin_rest = generated::sinpi_quarter((b1 - r) * inv_period);
+    const double Sx = h <= 0.25 ? 2 * sin_h * sin_h : std::fma(-2 * sin_rest, sin_rest, 2.0);
+    const double difference = a - r, sum = a + r;
+    const double d = difference * inv_period, d_rest = (b1 - difference) * inv_period;
+    const double s = (sum <= b1 ? sum : period - sum) * inv_period, s_rest = std::fabs(b1 - sum) * inv_period;
+    out.r[k] = r;
+    out.Sx[k] = Sx;
+    out.Cx[k] = std::fabs(w) <= 0.25 ? generated::sinpi_quarter(w) : 1 - Sx;
+    out.D[k] = 2 * sinpi_half(s, s_rest) * sinpi_half(d, d_rest);
+  }
+}
+
+// The atoms of the points x[i], i < count, of the zone 0 < a <= b1 (compute_atoms_any), into
+// angles[i] where r = |x| reduced to the period is < a, inside[i] = whether it is.
+void point_angles_kernel(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
+                         unsigned char* inside) {
+  Atoms atoms;
+  alignas(64) double padded[block];
+  for (std::size_t start = 0; start < count; start += block) {
+    const std::size_t n = std::min(block, count - start);
+    const double* points = x + start;
+    if (n < block) {
+      std::fill(std::copy(points, points + n, padded), padded + block, 0.0);
+      points = padded;
+    }
+    compute_atoms_any(b1, a, points, atoms);
+    for (std::size_t k = 0; k < n; ++k) {
+      inside[start + k] = atoms.r[k] < a;
+      angles[start + k] = {atoms.Cx[k], atoms.Sx[k], atoms.D[k]};
+    }
   }
 }
 

@@ -117,6 +117,12 @@ void simd_pressure(const WavinessZone& zone, Form form, const double* x, double*
   simd_pressure_avx2(zone, form, x, p, count);
 }
 
+void simd_point_angles(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
+                       unsigned char* inside) {
+  if (array_kernel_isa() == Isa::avx512) return simd_point_angles_avx512(b1, a, x, count, angles, inside);
+  simd_point_angles_avx2(b1, a, x, count, angles, inside);
+}
+
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
                                  std::size_t count) {
   if (array_kernel_isa() == Isa::avx512) return simd_add_roughness_pressure_avx512(zone, x, p, count);

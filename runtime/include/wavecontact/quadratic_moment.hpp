@@ -20,6 +20,7 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -27,6 +28,13 @@
 namespace wavecontact {
 
 namespace detail {
+
+// z >= -1 up to its rounding: where 1 + z is given apart (and > 0), z itself, formed from the
+// same atoms, may round a few ulps below -1.
+template <typename Scalar>
+bool at_least_minus_one(const Scalar& z) {
+  return z >= Scalar(-1) - Scalar(8) * Scalar(std::numeric_limits<double>::epsilon());
+}
 
 // Throws std::domain_error "wavecontact::<function>: j = .., l = .., <name> = <value>, ... are
 // invalid (valid: <valid>)".
@@ -106,10 +114,10 @@ Scalar quadratic_moment_closed(int j, int l, const Scalar& z, const Scalar& one_
 template <typename Scalar>
 Scalar quadratic_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   // z itself may round to -1 where 1 + z, given apart, does not vanish (m ~ 1e17 and beyond).
-  if (!(z >= -1) || !(one_plus_z > 0) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
+  if (!detail::at_least_minus_one(z) || !(one_plus_z > 0) || j < 0 || l < 1 || !std::isfinite(static_cast<double>(z))) {
     detail::invalid_arguments("quadratic_moment", j, l,
                               {{"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
-                              "j >= 0, l >= 1, z >= -1 finite, 1 + z > 0");
+                              "j >= 0, l >= 1, z >= -1 (up to 8 eps) finite, 1 + z > 0");
   }
   // I_{0,l} by its closed form wherever it is defined (z != 0): atan or atanh, then a recurrence of
   // positive terms; for j > 0 the recurrence in j cancels where |z| is small.
@@ -154,10 +162,10 @@ Scalar edge_moment_recurrence(int j, int l, const Scalar& z, const Scalar& one_p
 // Throws std::domain_error naming the argument otherwise.
 template <typename Scalar>
 Scalar edge_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
-  if (!(z >= -1) || !(one_plus_z > 0) || j < 0 || l < 0 || !std::isfinite(static_cast<double>(z))) {
+  if (!detail::at_least_minus_one(z) || !(one_plus_z > 0) || j < 0 || l < 0 || !std::isfinite(static_cast<double>(z))) {
     detail::invalid_arguments("edge_moment", j, l,
                               {{"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
-                              "j >= 0, l >= 0, z >= -1 finite, 1 + z > 0");
+                              "j >= 0, l >= 0, z >= -1 (up to 8 eps) finite, 1 + z > 0");
   }
   using std::pow;
   if (l == 0) return detail::edge_weight<Scalar>(j);
