@@ -22,10 +22,16 @@ CauchyAtomTable::CauchyAtomTable(const Atoms& atoms, int count, const std::vecto
   std::vector<double> values(static_cast<std::size_t>(nodes * count));
   for (const auto& [k, n] : points) {
     if (n < static_cast<std::size_t>(nodes)) continue;
-    // Chebyshev nodes of the first kind, xi_i = cos(theta_i), eta = k + (1 + xi)/2.
-    for (int i = 0; i < nodes; ++i) {
-      const double eta = static_cast<double>(k) + (1 + std::cos(pi * (i + 0.5) / nodes)) / 2;
-      atoms(std::expm1(eta), std::exp(eta), &values[static_cast<std::size_t>(i * count)]);
+    // Chebyshev nodes of the first kind, xi_i = cos(theta_i), eta = k + (1 + xi)/2. A panel whose
+    // nodes leave the atoms' domain (the points themselves lie in it) is not built: its points
+    // take the atoms directly.
+    try {
+      for (int i = 0; i < nodes; ++i) {
+        const double eta = static_cast<double>(k) + (1 + std::cos(pi * (i + 0.5) / nodes)) / 2;
+        atoms(std::expm1(eta), std::exp(eta), &values[static_cast<std::size_t>(i * count)]);
+      }
+    } catch (const std::domain_error&) {
+      continue;
     }
     if (panels_.empty()) first_ = k;
     panels_.resize(static_cast<std::size_t>(k - first_ + 1));
