@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <immintrin.h>
+
 #include "bounded_trigonometry.hpp"  // generated/
 #include "pressure_simd.hpp"
 #include "wavecontact/angles.hpp"
@@ -148,19 +150,49 @@ void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::siz
 // roughness_n<N>_pressure does per point (derive/roughness.hpp): here the coefficients come
 // once per zone and each step runs across the block's points (3 operations a point and a
 // step, the bound of the cost at large n).
+// Written on the unit's vector registers: groups of vectors of points (4 of 4 with AVX2, 8 of 8
+// with AVX-512: as many as the registers hold, to cover the 8-cycle chain of a step) go through
+// all the steps with b and d held in registers, which the loop across the whole block, storing
+// b and d at every step, could not (it ran at the rate of the stores).
 void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) {
-  alignas(64) double b[block], d[block], two_Sx[block];
-  for (std::size_t k = 0; k < block; ++k) b[k] = 0, d[k] = 0, two_Sx[k] = 2 * atoms.Sx[k];
-  for (int j = z.n - 1; j >= 0; --j) {
-    const double c = z.legendre[z.n - 1 - j];
-    for (std::size_t k = 0; k < block; ++k) {
-      const double d_j = std::fma(-b[k], two_Sx[k], c + d[k]);
-      b[k] += d_j;
-      d[k] = d_j;
+#if defined(__AVX512F__)
+  using Vector = __m512d;
+  constexpr std::size_t lanes = 8, vectors = 8;  // 32 registers
+  const auto load = [](const double* p) { return _mm512_load_pd(p); };
+  const auto store = [](double* p, Vector v) { _mm512_store_pd(p, v); };
+  const auto broadcast = [](double c) { return _mm512_set1_pd(c); };
+  const auto add = [](Vector a, Vector b) { return _mm512_add_pd(a, b); };
+  const auto minus_product_plus = [](Vector a, Vector b, Vector c) { return _mm512_fnmadd_pd(a, b, c); };
+#else
+  using Vector = __m256d;
+  constexpr std::size_t lanes = 4, vectors = 4;  // 16 registers: b, d, 2 Sx of each and c
+  const auto load = [](const double* p) { return _mm256_load_pd(p); };
+  const auto store = [](double* p, Vector v) { _mm256_store_pd(p, v); };
+  const auto broadcast = [](double c) { return _mm256_set1_pd(c); };
+  const auto add = [](Vector a, Vector b) { return _mm256_add_pd(a, b); };
+  const auto minus_product_plus = [](Vector a, Vector b, Vector c) { return _mm256_fnmadd_pd(a, b, c); };
+#endif
+  constexpr std::size_t points = vectors * lanes;
+  static_assert(block % points == 0, "whole groups of vectors per block");
+  alignas(64) double sum[block];
+  for (std::size_t start = 0; start < block; start += points) {
+    Vector b[vectors], d[vectors], two_Sx[vectors];
+    for (std::size_t v = 0; v < vectors; ++v) {
+      const Vector Sx = load(atoms.Sx + start + v * lanes);
+      b[v] = broadcast(0.0), d[v] = broadcast(0.0), two_Sx[v] = add(Sx, Sx);
     }
+    for (int j = z.n - 1; j >= 0; --j) {
+      const Vector c = broadcast(z.legendre[z.n - 1 - j]);
+      for (std::size_t v = 0; v < vectors; ++v) {  // d_j = c_j + d_{j+1} - 2 Sx b_{j+1}, one rounding for the product
+        const Vector d_j = minus_product_plus(b[v], two_Sx[v], add(c, d[v]));
+        b[v] = add(b[v], d_j);
+        d[v] = d_j;
+      }
+    }
+    for (std::size_t v = 0; v < vectors; ++v) store(sum + start + v * lanes, d[v]);
   }
   for (std::size_t k = 0; k < block; ++k) {
-    value[k] = z.scale * std::sqrt((1 + atoms.Cx[k]) * atoms.D[k]) * d[k];
+    value[k] = z.scale * std::sqrt((1 + atoms.Cx[k]) * atoms.D[k]) * sum[k];
   }
 }
 
