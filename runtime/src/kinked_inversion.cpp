@@ -8,6 +8,13 @@
 
 namespace wavecontact::detail {
 
+namespace {
+
+// Whether the point takes the other piece with its Cauchy factor (see BranchSide::pressure).
+bool takes_cauchy(double other_over_own) { return std::fabs(other_over_own) > 2; }
+
+}  // namespace
+
 BranchSide::BranchSide(BranchSideForms forms, double own_argument, double other_argument)
     : forms_(std::move(forms)),
       own_(own_argument < 0 ? BranchPart::own_edge : BranchPart::own),
@@ -48,18 +55,18 @@ double BranchSide::eta_at(const PointAngles& point) const {
 }
 
 double BranchSide::cauchy_eta(const PointAngles& point, double other_over_own) const {
-  return std::fabs(other_over_own) > 2 ? eta_at(point) : std::numeric_limits<double>::quiet_NaN();
+  return takes_cauchy(other_over_own) ? eta_at(point) : std::numeric_limits<double>::quiet_NaN();
 }
 
 void BranchSide::tabulate_cauchy(const std::vector<double>& etas) {
   const BranchPart part = other_cauchy_;
-  cauchy_table_ = CauchyAtomTable([this, part](double y, double one_plus_y, double* atoms) { forms_.atoms(part, y, one_plus_y, atoms); },
-                                  forms_.atom_counts[static_cast<int>(part)], etas);
+  const auto atoms = [this, part](double y, double one_plus_y, double* out) { forms_.atoms(part, y, one_plus_y, out); };
+  cauchy_table_ = CauchyAtomTable(atoms, forms_.atom_counts[static_cast<int>(part)], etas);
 }
 
 double BranchSide::pressure(const PointAngles& point, double other_over_own, bool at_branch, double eta) const {
   const double own = forms_.part(own_, point, own_atoms_.data());
-  if (std::fabs(other_over_own) > 2) return own + cauchy_part(point, eta);
+  if (takes_cauchy(other_over_own)) return own + cauchy_part(point, eta);
   const double other = forms_.part(other_, point, other_atoms_.data());
   return at_branch ? own + other : own + other + part_at_point(BranchPart::jump, point);
 }
