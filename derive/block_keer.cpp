@@ -140,7 +140,9 @@ ex in_cosine(const ex& y) {
     os << "profile is not even in x (y(-x) != y(x)): " << y;
     throw std::invalid_argument(os.str());
   }
-  if (!numerator.is_polynomial(c) || !denominator.is_polynomial(c)) {
+  // x left outside cos(k x), sin(k x) (abs(x), x*cos(x), ...) is not rational in them either.
+  if (!numerator.is_polynomial(c) || !denominator.is_polynomial(c) || numerator.has(sym::x()) ||
+      denominator.has(sym::x())) {
     std::ostringstream os;
     os << "profile is not a rational function of cos(k x), sin(k x): " << y;
     throw std::invalid_argument(os.str());
