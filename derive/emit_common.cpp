@@ -64,6 +64,9 @@ void write_moment_terms(std::ostream& os, const std::string& name, const std::ve
   }
 }
 
+const char* const branch_part_names[7] = {"own", "own_edge", "other_cauchy", "other_cauchy_edge", "other",
+                                          "other_edge", "jump"};
+
 namespace {
 
 bool depends_on_point(const ex& e) { return e.has(sym::Cx()) || e.has(sym::Sx()) || e.has(sym::D()); }
@@ -112,24 +115,26 @@ std::vector<EmittedFunction> pressure_beyond_branch(const std::string& prefix, c
                          "split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)\n"
                          "at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.",
                          point_arguments, 0, {}, {cauchy.y, cauchy.one_plus_y}});
-    const std::pair<const char*, const std::vector<MomentTerm>*> parts[] = {
-        {"own", &p.own},     {"own_edge", &p.own_edge},     {"other_cauchy", &p.other_cauchy},
-        {"other_cauchy_edge", &p.other_cauchy_edge}, {"other", &p.other}, {"other_edge", &p.other_edge},
-        {"jump", &p.jump}};
-    const char* docs[] = {
-        "the own piece's moment (I_{j,l})",
-        "the own piece's moment in I'_{j,l} (for own_argument < 0)",
-        "the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the\n"
-        "other branch's pole, where _other + _jump cancel",
-        "the same in J'_{j,l} (for other_argument < 0)",
-        "the other piece's moment with the other branch's value at x apart (I_{j,l})",
-        "the same in I'_{j,l} (for other_argument < 0)",
-        "the jump of the branches at x times the other piece's Cauchy moment"};
+    // In the order of branch_part_names; the parts without a Cauchy factor have the zone's atoms.
+    const struct {
+      const std::vector<MomentTerm>& terms;
+      bool zone;
+      const char* doc;
+    } parts[] = {
+        {p.own, true, "the own piece's moment (I_{j,l})"},
+        {p.own_edge, true, "the own piece's moment in I'_{j,l} (for own_argument < 0)"},
+        {p.other_cauchy, false,
+         "the other piece's moment with its Cauchy factor (J_{j,l}): with _own, the pressure near the\n"
+         "other branch's pole, where _other + _jump cancel"},
+        {p.other_cauchy_edge, false, "the same in J'_{j,l} (for other_argument < 0)"},
+        {p.other, true, "the other piece's moment with the other branch's value at x apart (I_{j,l})"},
+        {p.other_edge, true, "the same in I'_{j,l} (for other_argument < 0)"},
+        {p.jump, false, "the jump of the branches at x times the other piece's Cauchy moment"}};
     for (int k = 0; k < 7; ++k) {
-      const std::string part = name + "_" + parts[k].first;
+      const std::string part = name + "_" + branch_part_names[k];
       std::vector<ex> atoms;
       ex value = 0;
-      for (const MomentTerm& term : *parts[k].second) {
+      for (const MomentTerm& term : parts[k].terms) {
         const ex atom = atom_of_cauchy_argument(term, cauchy.y, cauchy.one_plus_y, y, one_plus_y);
         if (atom.is_equal(1)) {
           value += term.rational * GiNaC::sqrt(term.radicand);
@@ -141,13 +146,12 @@ std::vector<EmittedFunction> pressure_beyond_branch(const std::string& prefix, c
         value += term.rational * GiNaC::sqrt(term.radicand) * array_element("atoms", index);
       }
       const bool at_point = std::any_of(atoms.begin(), atoms.end(), [](const ex& a) { return a.has(y) || a.has(one_plus_y); });
-      const bool zone_part = k == 0 || k == 1 || k == 4 || k == 5;  // no Cauchy factor: the runtime keeps them per zone
-      if (zone_part && at_point) throw std::logic_error("pressure_beyond_branch: " + part + " has an atom at the point");
+      if (parts[k].zone && at_point) throw std::logic_error("pressure_beyond_branch: " + part + " has an atom at the point");
       functions.push_back({part + "_atoms",
                            "The atoms of " + part + std::string(at_point ? ", at the point's Cauchy argument y" : ", of the zone") +
                                (atoms.empty() ? " (none: out[0] = 0)." : "."),
                            atom_arguments, 0, {}, atoms.empty() ? std::vector<ex>{0} : atoms});
-      functions.push_back({part, std::string("Part of the pressure: ") + docs[k] + ", from " + part + "_atoms.",
+      functions.push_back({part, std::string("Part of the pressure: ") + parts[k].doc + ", from " + part + "_atoms.",
                            point_arguments, value, {}, {}, {"atoms"}});
     }
     functions.push_back({name + "_own_argument", "z of the own piece's pole factor: it selects the basis.",

@@ -33,6 +33,10 @@ void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum,
 // 1 + z, and y, 1 + y.
 void write_moment_terms(std::ostream& os, const std::string& name, const std::vector<MomentTerm>& terms);
 
+// The parts of the pressure beyond a change of branch, in the order of the runtime's BranchPart
+// (runtime/src/kinked_inversion.hpp).
+extern const char* const branch_part_names[7];
+
 // The pressure beyond a change of branch (beyond_branch.hpp) as emitted functions, per side
 // <prefix>_<side> (top or flank): <side>_cauchy_argument (of `point_arguments`: y and 1 + y of
 // the Cauchy factor at the point), and per part (own, own_edge, other_cauchy, other_cauchy_edge,

@@ -254,7 +254,6 @@ std::string branch_adapters(const ProfileDerivation& d) {
      << adapter(d, "branch.flank_height", "double Cx", "flank_height", q + "Cx")
      << adapter(d, "branch.flank_height_slope", "double Cx", "flank_height_slope", q + "Cx");
   const std::string unused = d.parameters.empty() ? "/*q*/" : "q";
-  const char* parts[] = {"own", "own_edge", "other_cauchy", "other_cauchy_edge", "other", "other_edge", "jump"};
   for (int side = 0; side < 2; ++side) {
     const std::string prefix = d.spec.name + "_beyond_branch_pressure_" + (side == 0 ? "top" : "flank") + "_";
     os << "  e.branch.cauchy_argument[" << side << "] = [](const double* " << unused
@@ -263,11 +262,11 @@ std::string branch_adapters(const ProfileDerivation& d) {
     for (int k = 0; k < 7; ++k) {
       os << "  e.branch.part_atoms[" << side << "][" << k << "] = [](const double* " << unused
          << ", double E, double b1, double Ca, double Sa, double y, double one_plus_y, double* atoms) {\n    "
-         << prefix << parts[k] << "_atoms<double>(E, b1, " << q << "Ca, Sa, y, one_plus_y, atoms);\n  };\n"
-         << "  e.branch.atom_counts[" << side << "][" << k << "] = " << prefix << parts[k] << "_atoms_outputs;\n"
+         << prefix << branch_part_names[k] << "_atoms<double>(E, b1, " << q << "Ca, Sa, y, one_plus_y, atoms);\n  };\n"
+         << "  e.branch.atom_counts[" << side << "][" << k << "] = " << prefix << branch_part_names[k] << "_atoms_outputs;\n"
          << "  e.branch.pressure_parts[" << side << "][" << k << "] = [](const double* " << unused
          << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D, const double* atoms) {\n"
-         << "    return " << prefix << parts[k] << "<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, atoms);\n  };\n";
+         << "    return " << prefix << branch_part_names[k] << "<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, atoms);\n  };\n";
     }
     for (const char* argument : {"own_argument", "other_argument"}) {
       os << "  e.branch." << argument << "[" << side << "] = [](const double* " << unused
