@@ -38,21 +38,25 @@ struct Atoms {
 // amplify there; the subtraction in D loses nothing (a^ - pi d lies in [a^/2, a^], within
 // [0, pi/2], so its first term is at most twice the result): every atom keeps its relative
 // accuracy, Cx where cos x^ -> 0, D at the zone's edge, Sx at its centre. Outside the zone
-// the values are finite and discarded. sin_a = sin a^, cos_a = cos a^.
+// the values are finite and discarded. sin_a = sin a^, cos_a = cos a^. Without with_cosine, Cx
+// is left unwritten (the roughness takes 1 + cos x^ as 2 - Sx).
+template <bool with_cosine>
 void compute_atoms(double b1, double a, double sin_a, double cos_a, const double* x, Atoms& out) {
   const double period = 2 * b1, inv_period = 0.5 / b1;
   for (std::size_t k = 0; k < block; ++k) {
     const double r = std::fabs(std::fma(-std::nearbyint(x[k] * inv_period), period, x[k]));
-    const double w = (b1 - 2 * r) * inv_period, d = (a - r) * inv_period;
+    const double d = (a - r) * inv_period;
     const double sin_h = generated::sinpi_quarter(r * inv_period);
-    const double sin_w = generated::sinpi_quarter(w);
     const double sin_d = generated::sinpi_quarter(d);
     const double sin_half_d = generated::sinpi_quarter(d * 0.5);
     const double Sx = 2 * sin_h * sin_h;
     const double cos_d = std::fma(-2 * sin_half_d, sin_half_d, 1.0);
     out.r[k] = r;
     out.Sx[k] = Sx;
-    out.Cx[k] = w <= 0.25 ? sin_w : 1 - Sx;
+    if constexpr (with_cosine) {
+      const double w = (b1 - 2 * r) * inv_period;
+      out.Cx[k] = w <= 0.25 ? generated::sinpi_quarter(w) : 1 - Sx;
+    }
     out.D[k] = 2 * sin_d * std::fma(sin_a, cos_d, -cos_a * sin_d);
   }
 }
@@ -112,10 +116,10 @@ void point_angles_kernel(double b1, double a, const double* x, std::size_t count
   }
 }
 
-// For each block of points: the atoms, then evaluate_block(atoms, value) (branch-free over
+// For each block of points: the atoms (Cx only with_cosine), then evaluate_block(atoms, value) (branch-free over
 // the whole block, so that it vectorises; outside the zone D < 0 and the value is
 // discarded), then store(k, value) for the points of the zone and store(k, 0) elsewhere.
-template <typename BlockEvaluator, typename Store>
+template <bool with_cosine, typename BlockEvaluator, typename Store>
 void pressure_blocks(double b1, double a, double Ca, double Sa, const double* x, std::size_t count,
                      const BlockEvaluator& evaluate_block, const Store& store) {
   Atoms atoms;  // every field read is written first
@@ -128,7 +132,7 @@ void pressure_blocks(double b1, double a, double Ca, double Sa, const double* x,
       std::fill(std::copy(points, points + n, padded), padded + block, 0.0);
       points = padded;
     }
-    compute_atoms(b1, a, sin_a, Ca, points, atoms);
+    compute_atoms<with_cosine>(b1, a, sin_a, Ca, points, atoms);
     evaluate_block(atoms, value);
     for (std::size_t k = 0; k < n; ++k) store(start + k, atoms.r[k] < a ? value[k] : 0.0);
   }
@@ -137,7 +141,7 @@ void pressure_blocks(double b1, double a, double Ca, double Sa, const double* x,
 template <typename Evaluator>
 void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::size_t count,
                      const Evaluator& evaluate) {
-  pressure_blocks(
+  pressure_blocks<true>(
       z.b1, z.a, z.Ca, z.Sa, x, count,
       [&](const Atoms& atoms, double* value) {
         for (std::size_t k = 0; k < block; ++k) value[k] = evaluate(atoms.Cx[k], atoms.Sx[k], atoms.D[k]);
@@ -191,8 +195,8 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
     }
     for (std::size_t v = 0; v < vectors; ++v) store(sum + start + v * lanes, d[v]);
   }
-  for (std::size_t k = 0; k < block; ++k) {
-    value[k] = z.scale * std::sqrt((1 + atoms.Cx[k]) * atoms.D[k]) * sum[k];
+  for (std::size_t k = 0; k < block; ++k) {  // 1 + cos x^ = 2 - Sx, in [1, 2] in the zone
+    value[k] = z.scale * std::sqrt((2 - atoms.Sx[k]) * atoms.D[k]) * sum[k];
   }
 }
 
@@ -211,7 +215,7 @@ void pressure_kernel(const WavinessZone& z, Form form, const double* x, double* 
 }
 
 void add_roughness_kernel(const RoughnessZone& z, const double* x, double* p, std::size_t count) {
-  pressure_blocks(
+  pressure_blocks<false>(
       z.b1, z.a, z.Ca, z.Sa, x, count, [&](const Atoms& atoms, double* value) { roughness_block(z, atoms, value); },
       [p](std::size_t i, double value) { p[i] += value; });
 }
