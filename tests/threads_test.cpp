@@ -7,6 +7,7 @@
 #include <cstring>
 #include <functional>
 #include <stdexcept>
+#include <string>
 
 #include "isa_under_test.hpp"
 #include "wavecontact/contact.hpp"
@@ -61,6 +62,31 @@ BOOST_AUTO_TEST_CASE(contact_pressure) {
   same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { c.pressure(x, p); },
                                  Eigen::ArrayXd::LinSpaced(50 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -10, 10),
                                  "contact");
+}
+
+// A point that is not finite, in the first, a middle or the last chunk of a split array: the
+// domain error names it and p is left as it was, whatever the threads.
+BOOST_AUTO_TEST_CASE(non_finite_point_refused_before_any_is_written) {
+  const WavinessParams w{1.0, 10.0, 2.0, 1.0};
+  for (int threads : {1, 2, 7}) {
+    set_array_kernel_threads(threads);
+    for (const Eigen::Index at : {Eigen::Index{0}, points.size() / 2, points.size() - 1}) {
+      for (const double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+        Eigen::ArrayXd x = points, p = Eigen::ArrayXd::Constant(points.size(), 42.0);
+        x[at] = bad;
+        bool refused = false;
+        try {
+          pressure(w, 4.0, x, p);
+        } catch (const std::domain_error& e) {
+          refused = std::string(e.what()).find("wavecontact::pressure: x = ") == 0;
+          BOOST_TEST(refused, "the message: " << e.what());
+        }
+        BOOST_TEST(refused, "x[" << at << "] = " << bad << ", " << threads << " threads: not refused");
+        BOOST_TEST((p == 42.0).all(), "x[" << at << "] = " << bad << ", " << threads << " threads: p written");
+      }
+    }
+  }
+  set_array_kernel_threads(0);
 }
 
 BOOST_AUTO_TEST_CASE(thread_count_is_validated) {

@@ -49,28 +49,53 @@ void set_array_kernel_threads(int threads) {
 
 namespace detail {
 
-void for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points,
+bool for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points,
+                    const std::function<bool(std::size_t, std::size_t)>& check,
                     const std::function<void(std::size_t, std::size_t)>& body) {
   const std::size_t blocks = (count + block - 1) / block;
   const std::size_t threads =
       count < min_points ? 1 : std::min(blocks, static_cast<std::size_t>(array_kernel_threads()));
   if (threads <= 1) {
+    if (check && !check(0, count)) return false;
     body(0, count);
-    return;
+    return true;
   }
-  const std::size_t per_thread = (blocks + threads - 1) / threads * block;
+  // Chunks handed out in order from a shared counter, chunks_per_thread a thread on average:
+  // a thread that the machine slows down takes fewer of them, where equal shares fixed in
+  // advance would all wait for it. Each point is computed alone, so which thread takes which
+  // chunk does not change a bit. The checks first, all of them (a thread waits for the
+  // chunks the others are checking), then the bodies.
+  constexpr std::size_t chunks_per_thread = 8;
+  const std::size_t chunk = (blocks + threads * chunks_per_thread - 1) / (threads * chunks_per_thread) * block;
+  const std::size_t chunks = (count + chunk - 1) / chunk;
+  std::atomic<std::size_t> next_check{0}, checked{0}, next_body{0};
+  std::atomic<bool> held{true};
+  const auto work = [&] {
+    if (check) {
+      for (std::size_t begin; (begin = next_check.fetch_add(chunk)) < count; checked.fetch_add(1)) {
+        if (!check(begin, std::min(count, begin + chunk))) held.store(false);
+      }
+      while (checked.load() < chunks) std::this_thread::yield();
+      if (!held.load()) return;
+    }
+    for (std::size_t begin; (begin = next_body.fetch_add(chunk)) < count;) body(begin, std::min(count, begin + chunk));
+  };
   std::vector<std::thread> workers;
-  std::size_t begin = per_thread;
-  for (; begin < count; begin += per_thread) {
+  for (std::size_t t = 1; t < threads; ++t) {
     try {
-      workers.emplace_back(body, begin, std::min(count, begin + per_thread));
+      workers.emplace_back(work);
     } catch (const std::system_error&) {
-      break;  // no thread to be had: the calling thread takes the rest
+      break;  // no thread to be had: the others take its chunks
     }
   }
-  body(0, std::min(count, per_thread));  // the calling thread takes the first chunk
-  for (; begin < count; begin += per_thread) body(begin, std::min(count, begin + per_thread));
+  work();
   for (std::thread& worker : workers) worker.join();
+  return held.load();
+}
+
+void for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points,
+                    const std::function<void(std::size_t, std::size_t)>& body) {
+  for_each_chunk(count, block, min_points, nullptr, body);
 }
 
 }  // namespace detail

@@ -1,7 +1,8 @@
 // The array kernels of the pressure for a <= b1/2: the angle atoms from the generated
 // bounded sines (generated/bounded_trigonometry.hpp), then, over a block of points, either
 // the generated waviness closed form or the roughness series with the zone's generated
-// Legendre coefficients, all in loops the compiler vectorises (pressure_simd_kernels.hpp).
+// Legendre coefficients, all in loops the compiler vectorises (pressure_simd_kernels.hpp); and
+// the check that an array's points are finite.
 // Built once per ISA in its own translation unit (pressure_simd_avx2.cpp: AVX2 + FMA;
 // pressure_simd_avx512.cpp: AVX-512F) and chosen at run time (array_kernel_isa()); other
 // CPUs take the scalar paths.
@@ -48,6 +49,9 @@ void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, dou
 void simd_point_angles(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
                        unsigned char* inside);
 
+// Whether x[i], i < count, are all finite. As above.
+bool simd_all_finite(const double* x, std::size_t count);
+
 // The same per ISA: call only where the CPU has it.
 void simd_pressure_avx2(const WavinessZone& zone, Form form, const double* x, double* p,
                         std::size_t count);
@@ -61,5 +65,7 @@ void simd_point_angles_avx2(double b1, double a, const double* x, std::size_t co
                             unsigned char* inside);
 void simd_point_angles_avx512(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
                               unsigned char* inside);
+bool simd_all_finite_avx2(const double* x, std::size_t count);
+bool simd_all_finite_avx512(const double* x, std::size_t count);
 
 }  // namespace wavecontact::detail

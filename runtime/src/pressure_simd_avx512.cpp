@@ -20,4 +20,6 @@ void simd_point_angles_avx512(double b1, double a, const double* x, std::size_t 
   point_angles_kernel(b1, a, x, count, angles, inside);
 }
 
+bool simd_all_finite_avx512(const double* x, std::size_t count) { return all_finite_kernel(x, count); }
+
 }  // namespace wavecontact::detail

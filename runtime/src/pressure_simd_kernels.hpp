@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include <immintrin.h>
 
@@ -198,6 +200,19 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
   for (std::size_t k = 0; k < block; ++k) {  // 1 + cos x^ = 2 - Sx, in [1, 2] in the zone
     value[k] = z.scale * std::sqrt((2 - atoms.Sx[k]) * atoms.D[k]) * sum[k];
   }
+}
+
+// Whether every x[i], i < count, is finite: its exponent bits not all set (integer tests that
+// vectorise, with no branch until the end).
+bool all_finite_kernel(const double* x, std::size_t count) {
+  constexpr std::uint64_t exponent = 0x7ff0000000000000;
+  std::uint64_t non_finite = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    std::uint64_t bits;
+    std::memcpy(&bits, x + i, sizeof bits);
+    non_finite |= (bits & exponent) == exponent;
+  }
+  return non_finite == 0;
 }
 
 void pressure_kernel(const WavinessZone& z, Form form, const double* x, double* p,

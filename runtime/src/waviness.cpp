@@ -78,26 +78,30 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
   constexpr const char* function = "wavecontact::pressure";
   validate(params, function);
   require_half_width(function, params, a, form);
-  detail::require_points(function, x, p.size());
+  detail::require_same_size(function, x, p.size());
   const ZoneAngles zone = zone_angles(a, params.b1);
-  const bool simd = !beyond_half_exact(params, a, form) && detail::simd_pressure_available();
-  const detail::WavinessZone simd_zone{params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa};
+  const auto count = static_cast<std::size_t>(x.size());
   const double* xs = x.data();
   double* ps = p.data();
-  const bool beyond_half = beyond_half_exact(params, a, form);
-  const std::size_t min_points = beyond_half ? parallel_points_costly : parallel_points;
-  if (beyond_half) {
-    detail::BeyondHalfZone(params, zone).pressures(a, params.b1, xs, ps, static_cast<std::size_t>(x.size()), min_points);
+  if (beyond_half_exact(params, a, form)) {
+    detail::require_finite_points(function, x);
+    detail::BeyondHalfZone(params, zone).pressures(a, params.b1, xs, ps, count, parallel_points_costly);
     return;
   }
-  detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, min_points,
-                         [&](std::size_t begin, std::size_t end) {
-    if (simd) {
-      detail::simd_pressure(simd_zone, form, xs + begin, ps + begin, end - begin);
-    } else {
-      for (std::size_t i = begin; i < end; ++i) ps[i] = pressure_at(params, a, zone, xs[i], form);
-    }
-  });
+  const bool simd = detail::simd_pressure_available();
+  const detail::WavinessZone simd_zone{params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa};
+  // The points are checked in the threads, before any is computed.
+  const bool finite = detail::for_each_chunk(
+      count, detail::simd_block, parallel_points,
+      [xs](std::size_t begin, std::size_t end) { return detail::all_finite(xs + begin, end - begin); },
+      [&](std::size_t begin, std::size_t end) {
+        if (simd) {
+          detail::simd_pressure(simd_zone, form, xs + begin, ps + begin, end - begin);
+        } else {
+          for (std::size_t i = begin; i < end; ++i) ps[i] = pressure_at(params, a, zone, xs[i], form);
+        }
+      });
+  if (!finite) detail::require_finite_points(function, x);
 }
 
 Eigen::ArrayXd pressure(const WavinessParams& params, double a,
@@ -127,6 +131,11 @@ void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, dou
                                  std::size_t count) {
   if (array_kernel_isa() == Isa::avx512) return simd_add_roughness_pressure_avx512(zone, x, p, count);
   simd_add_roughness_pressure_avx2(zone, x, p, count);
+}
+
+bool simd_all_finite(const double* x, std::size_t count) {
+  if (array_kernel_isa() == Isa::avx512) return simd_all_finite_avx512(x, count);
+  return simd_all_finite_avx2(x, count);
 }
 
 }  // namespace detail

@@ -1,7 +1,7 @@
 // The threads of the array evaluations (waviness.hpp, two_scale.hpp, contact.hpp): a large
-// enough array is split into contiguous chunks of whole SIMD blocks, one per thread. Every
-// point is computed as it would be alone, so the results are the same bits whatever the
-// number of threads.
+// enough array is split into contiguous chunks of whole SIMD blocks (about 8 a thread), which
+// the threads take in turn from a shared counter. Every point is computed as it would be
+// alone, so the results are the same bits whatever the number of threads.
 #pragma once
 
 #include <cstddef>
