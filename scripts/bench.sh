@@ -80,10 +80,16 @@ ours = per_item_ns("BM_waviness_pressure_generated/1000000")
 if python_ns is not None and ours is not None:
     print(f"{'pressure 1e6 points from Python, ns/point':40} {python_ns:12.4g} {'C++ array API':>24} {ours:12.4g}"
           f" {python_ns / ours:7.2f}x (Python / C++)")
-for label, name in (("pressure beyond b1/2 (quadrature), ns/point", "BM_pressure_beyond_half"),
-                    ("the same within 1e-2..1e-12 of the kink", "BM_pressure_beyond_half_near_kink")):
-    value = per_item_ns(name)
-    print(f"{label:40} {value if value is not None else float('nan'):12.4g}")
+for label, ours_name, baseline_name in (
+        ("pressure beyond b1/2, array, ns/point", "BM_pressure_beyond_half_array/10000", "BM_pressure_beyond_half_quadrature"),
+        ("pressure beyond b1/2, per point", "BM_pressure_beyond_half", "BM_pressure_beyond_half_quadrature"),
+        ("the same within 1e-2..1e-12 of the kink", "BM_pressure_beyond_half_near_kink",
+         "BM_pressure_beyond_half_near_kink_quadrature")):
+    ours, base = per_item_ns(ours_name), per_item_ns(baseline_name)
+    if ours is None or base is None:
+        print(f"{label:40} {'n/a':>12} {'quadrature of eq. 12':>24} {'n/a':>12}")
+        continue
+    print(f"{label:40} {ours:12.4g} {'quadrature of eq. 12':>24} {base:12.4g} {base / ours:7.1f}x")
 for label, name in (("load P(a), ns/call", "BM_load"), ("load P(a) beyond b1/2, ns/call", "BM_load_beyond_half"), ("inverse a(P) for a <= b1/2, ns/call", "BM_single_asperity_half_width"),
                     ("all zones for P, given LoadCurve, ns", "BM_equilibria"),
                     ("LoadCurve (turning points of P(a)), ns", "BM_load_curve"),

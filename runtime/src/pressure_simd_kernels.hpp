@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include <immintrin.h>
 
@@ -156,17 +157,19 @@ void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::siz
 // roughness_n<N>_pressure does per point (derive/roughness.hpp): here the coefficients come
 // once per zone and each step runs across the block's points (3 operations a point and a
 // step, the bound of the cost at large n).
-// Written on the unit's vector registers: groups of vectors of points (4 of 4 with AVX2, 8 of 8
-// with AVX-512: as many as the registers hold, to cover the 8-cycle chain of a step) go through
-// all the steps with b and d held in registers, which the loop across the whole block, storing
-// b and d at every step, could not (it ran at the rate of the stores). Every other step forms
-// c_j + d_{j+1} as fma(d_{j+1}, 1, c_j) (the same value, exactly): AVX-512 then shares its
-// additions between the adders and the FMA units (n = 256: 20.2 -> 18.7 ns a point on this
-// project's AVX-512 machine; no change on the AVX2 path, whose steps wait on the chain).
+// Written on the unit's vector registers: groups of vectors of points (7 of 4 with AVX2, then
+// one; 8 of 8 with AVX-512) go through all the steps with b and d held in registers, 2 Sx read
+// from memory by the multiply-add, which the loop across the whole block, storing b and d at
+// every step, could not (it ran at the rate of its stores). A step waits 7 cycles on the one
+// before (multiply-add, then addition): the more vectors a group, the more of that time is
+// used, as far as the registers go (on AVX2, 4 vectors 38.6 ns a point at n = 256, 6: 28.7,
+// 7: 26.3, 8 spill: 40). Every other step forms c_j + d_{j+1} as fma(d_{j+1}, 1, c_j) (the
+// same value, exactly): AVX-512 then shares its additions between the adders and the FMA units
+// (n = 256: 20.2 -> 18.7 ns a point on this project's AVX-512 machine).
 void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) {
 #if defined(__AVX512F__)
   using Vector = __m512d;
-  constexpr std::size_t lanes = 8, vectors = 8;  // 32 registers
+  constexpr std::size_t lanes = 8, vectors = 8, tail_vectors = 8;  // of 32 registers: b, d, c, 1
   const auto load = [](const double* p) { return _mm512_load_pd(p); };
   const auto store = [](double* p, Vector v) { _mm512_store_pd(p, v); };
   const auto broadcast = [](double c) { return _mm512_set1_pd(c); };
@@ -175,7 +178,7 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
   const auto product_plus = [](Vector a, Vector b, Vector c) { return _mm512_fmadd_pd(a, b, c); };
 #else
   using Vector = __m256d;
-  constexpr std::size_t lanes = 4, vectors = 4;  // 16 registers: b, d, 2 Sx of each and c
+  constexpr std::size_t lanes = 4, vectors = 7, tail_vectors = 1;  // of 16 registers: b, d, c, 1
   const auto load = [](const double* p) { return _mm256_load_pd(p); };
   const auto store = [](double* p, Vector v) { _mm256_store_pd(p, v); };
   const auto broadcast = [](double c) { return _mm256_set1_pd(c); };
@@ -183,21 +186,20 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
   const auto minus_product_plus = [](Vector a, Vector b, Vector c) { return _mm256_fnmadd_pd(a, b, c); };
   const auto product_plus = [](Vector a, Vector b, Vector c) { return _mm256_fmadd_pd(a, b, c); };
 #endif
-  constexpr std::size_t points = vectors * lanes;
-  static_assert(block % points == 0, "whole groups of vectors per block");
-  alignas(64) double sum[block];
-  for (std::size_t start = 0; start < block; start += points) {
-    Vector b[vectors], d[vectors], two_Sx[vectors];
-    for (std::size_t v = 0; v < vectors; ++v) {
-      const Vector Sx = load(atoms.Sx + start + v * lanes);
-      b[v] = broadcast(0.0), d[v] = broadcast(0.0), two_Sx[v] = add(Sx, Sx);
-    }
-    const Vector one = broadcast(1.0);
+  static_assert(block % (vectors * lanes) % (tail_vectors * lanes) == 0, "whole groups of vectors per block");
+  alignas(64) double sum[block], two_Sx[block];
+  for (std::size_t k = 0; k < block; ++k) two_Sx[k] = 2 * atoms.Sx[k];
+  const Vector one = broadcast(1.0);
+  // The points from start on, count vectors of them, through every step.
+  const auto group = [&](std::size_t start, auto count) {
+    constexpr std::size_t group_vectors = decltype(count)::value;
+    Vector b[group_vectors], d[group_vectors];
+    for (std::size_t v = 0; v < group_vectors; ++v) b[v] = broadcast(0.0), d[v] = broadcast(0.0);
     const auto step = [&](int j, bool on_fma) {
       const Vector c = broadcast(z.legendre[z.n - 1 - j]);
-      for (std::size_t v = 0; v < vectors; ++v) {  // d_j = c_j + d_{j+1} - 2 Sx b_{j+1}, one rounding for the product
+      for (std::size_t v = 0; v < group_vectors; ++v) {  // d_j = c_j + d_{j+1} - 2 Sx b_{j+1}, one rounding for the product
         const Vector sum_cd = on_fma ? product_plus(d[v], one, c) : add(c, d[v]);
-        const Vector d_j = minus_product_plus(b[v], two_Sx[v], sum_cd);
+        const Vector d_j = minus_product_plus(b[v], load(two_Sx + start + v * lanes), sum_cd);
         b[v] = add(b[v], d_j);
         d[v] = d_j;
       }
@@ -205,7 +207,12 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
     int j = z.n - 1;
     for (; j >= 1; j -= 2) step(j, false), step(j - 1, true);
     if (j == 0) step(0, false);
-    for (std::size_t v = 0; v < vectors; ++v) store(sum + start + v * lanes, d[v]);
+    for (std::size_t v = 0; v < group_vectors; ++v) store(sum + start + v * lanes, d[v]);
+  };
+  std::size_t start = 0;
+  for (; start + vectors * lanes <= block; start += vectors * lanes) group(start, std::integral_constant<std::size_t, vectors>{});
+  if constexpr (block % (vectors * lanes) != 0) {
+    for (; start < block; start += tail_vectors * lanes) group(start, std::integral_constant<std::size_t, tail_vectors>{});
   }
   for (std::size_t k = 0; k < block; ++k) {  // 1 + cos x^ = 2 - Sx, in [1, 2] in the zone
     value[k] = z.scale * std::sqrt((2 - atoms.Sx[k]) * atoms.D[k]) * sum[k];
