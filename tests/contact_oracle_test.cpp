@@ -5,8 +5,9 @@
 // within the oracle's error estimate (doubled: Richardson's estimate is itself an estimate)
 // plus the solver's, for the cases: the seed's Fig. 7 parameters (m = 0 and 10,
 // n = 8 and 16), a small roughness (H2 = 0.02) on m = 2 and 10 above their single-zone peak
-// loads, and a profile with a dimpled top. The profiles are written here from eqs. 2-3, not
-// taken from the runtime.
+// loads, a profile with a dimpled top, and sines with two harmonics past the events at which
+// the continuation once stalled. The profiles are written here from eqs. 2-3, not taken from
+// the runtime.
 #define BOOST_TEST_MODULE contact_oracle
 #include <boost/test/unit_test.hpp>
 
@@ -143,4 +144,32 @@ BOOST_AUTO_TEST_CASE(dimpled_profile) {
         [](double x) { return std::cos(x) - 0.2 * std::cos(3 * x); }, 1.0, P, grid);
     compare(c, bem, 10, "two_harmonic H3 = -0.2, P = " + std::to_string(P));
   }
+}
+
+// A sine with harmonics n = 4 and 16, loaded past P = 2.1386, where the zone's end runs into
+// an asperity: at the continuation's quadrature order the gap just beyond the end dipped
+// 9e-9 below 0 (it is +1.4e-8), and the continuation stalled reopening a zone there (found by
+// a search over two-harmonic profiles).
+BOOST_AUTO_TEST_CASE(zone_end_running_into_an_asperity) {
+  for (double P : {2.2, 3.0}) {
+    const Contact c = solve_contact(Surface(WavinessParams{1, 10, 0, 1}, {{0.15, 4}, {0.02, 16}}), P);
+    const BemEstimate bem = test::bem_extrapolated(
+        [](double x) { return std::cos(x) + 0.15 * std::cos(4 * x) + 0.02 * std::cos(16 * x); }, 1.0, P, grid);
+    compare(c, bem, 10, "n = 4 and 16, P = " + std::to_string(P));
+  }
+}
+
+// A sine with harmonics n = 4 and 24, loads 0.15 to 2.7 by one continuation, the valley
+// closing near the last: a gap at x^ = pi, the end of the last gap panel, that rounding put
+// outside it read 0 when the polishing order checked the continuation's penetrations, and a
+// contact penetrating the valley by 0.03 was taken for admissible (the continuation then
+// stalled). On the 8192-point grids: on 4096 the oracle's p(0) estimate is too tight here.
+BOOST_AUTO_TEST_CASE(valley_at_the_end_of_the_gap_panels) {
+  std::vector<double> loads;
+  for (int i = 1; i <= 18; ++i) loads.push_back(0.15 * i);
+  const std::vector<Contact> sweep = solve_contact(Surface(WavinessParams{1, 10, 0, 1}, {{0.1, 4}, {0.01, 24}}), loads);
+  const BemEstimate bem = test::bem_extrapolated(
+      [](double x) { return std::cos(x) + 0.1 * std::cos(4 * x) + 0.01 * std::cos(24 * x); }, 1.0, loads.back(),
+      2 * grid);
+  compare(sweep.back(), bem, 10, "n = 4 and 24, P = 2.7");
 }

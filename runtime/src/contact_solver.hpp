@@ -10,8 +10,9 @@
 // new zone starts small just past it), a gap between zones closing (they merge), a zone
 // reaching the top or the valley, and full contact, whose onset load is known in closed form
 // (p = P/(2 pi) + p0 in full contact). Every accepted state is checked: p >= 0 on the zones
-// and gap >= 0 off them. Where one zone at the top is admissible at the load it is the
-// answer (the solution is unique) and no continuation is needed.
+// and gap >= 0 off them (a penetration only if the polishing order confirms it). Where one
+// zone at the top is admissible at the load it is the answer (the solution is unique) and no
+// continuation is needed.
 #pragma once
 
 #include <memory>

@@ -158,8 +158,9 @@ IntervalInversion::Point IntervalInversion::panel_point(const Panel& panel, doub
 bool IntervalInversion::locate(const Panel& panel, const Point& p, double& xi) const {
   const double squared = panel.dir * to_ref(p, panel.anchor);
   if (squared < 0) return false;
-  const double w = std::sqrt(squared);
-  if (w < panel.wa || w > panel.wb) return false;
+  // The panel's own ends (0 and pi among them) are in it, whichever way w rounds there.
+  const double w = std::sqrt(squared), slack = 4 * std::numeric_limits<double>::epsilon() * panel.wb;
+  if (w < panel.wa - slack || w > panel.wb + slack) return false;
   if (panel.kink >= 0) {  // w - wk from the offset to the kink
     const double dw = panel.dir * to_ref(p, panel.kink) / (w + panel.wk);
     xi = (2 * dw - (panel.wa - panel.wk) - (panel.wb - panel.wk)) / (panel.wb - panel.wa);
