@@ -173,3 +173,17 @@ BOOST_AUTO_TEST_CASE(valley_at_the_end_of_the_gap_panels) {
       2 * grid);
   compare(sweep.back(), bem, 10, "n = 4 and 24, P = 2.7");
 }
+
+// A sine with harmonics n = 4 and 32 at P = 4.5, six zones in [0, b1]. On the way zones open
+// next to others and gaps close between them: stretches down to 7e-5 wide, whose width the
+// conditions on the zone ends feel only to second order, and a gap whose closing the steps
+// approach without reaching (merged ahead, from P = 4.4512 to 4.4794). The continuation
+// stalled at P = 4.4511 with seven zones in half a period (found by a search over
+// two-harmonic profiles).
+BOOST_AUTO_TEST_CASE(narrow_gaps_and_new_zones_on_the_way) {
+  const double P = 4.5;
+  const Contact c = solve_contact(Surface(WavinessParams{1, 10, 0, 1}, {{0.15, 4}, {0.03, 32}}), P);
+  const BemEstimate bem = test::bem_extrapolated(
+      [](double x) { return std::cos(x) + 0.15 * std::cos(4 * x) + 0.03 * std::cos(32 * x); }, 1.0, P, grid);
+  compare(c, bem, 10, "n = 4 and 32, P = 4.5");
+}

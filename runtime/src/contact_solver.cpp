@@ -32,6 +32,8 @@ constexpr double penetration_tolerance = 1e-9;  // gap >= -this * (max y - min y
 constexpr int topology_changes = 16;
 constexpr int max_zones = 64;  // in half a period
 constexpr double merge_ratio = 1e-2;  // a gap this much narrower than its zones may merge
+constexpr double merge_ahead_ratio = 0.1;  // a closing gap this narrow may merge ahead
+constexpr double narrow_stretch = 0.1;  // of its neighbours: differenced by its width
 constexpr double rounding_limit = 1e-8;  // of the pressure: beyond it the zones cannot be resolved
 // A new zone starts about this wide (x^) relative to the surface's resolution.
 constexpr double birth_width = 1.0 / 64;
@@ -178,17 +180,38 @@ ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, doubl
     return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>(r.data(), n));
   };
   // The Jacobian by forward differences, each end moved by a small part of the shorter
-  // stretch (zone or gap) next to it.
+  // stretch (zone or gap) next to it. A stretch between two free ends narrower than a tenth
+  // of its neighbours (a zone just opened, a gap about to close) is moved as a whole and
+  // widened, each by its own difference: the conditions depend on its width w only to order
+  // w^2, so its ends' columns nearly cancel, and their difference taken apart is rounding.
   auto differences = [&](const std::vector<double>& at, const Eigen::VectorXd& r_at) {
     const std::vector<double> ends = all_ends(IntervalInversion::with_free_ends(zones, at));
+    auto length = [&](std::size_t e) { return ends[e + 1] - ends[e]; };  // of ends[e] .. ends[e + 1]
+    auto column = [&](Eigen::Index a, double move_a, Eigen::Index b, double move_b, double h) {
+      std::vector<double> moved = at;
+      moved[static_cast<std::size_t>(a)] += move_a * h;
+      moved[static_cast<std::size_t>(b)] += move_b * h;
+      return Eigen::VectorXd((residual(moved) - r_at) / h);
+    };
     Eigen::MatrixXd D(n, n);
     Eigen::Index j = 0;
     for (std::size_t e = 1; e + 1 < ends.size(); ++e) {
       if (ends[e] == 0 || ends[e] == pi) continue;
-      const double h = 1e-7 * std::min(ends[e] - ends[e - 1], ends[e + 1] - ends[e]);
-      std::vector<double> moved = at;
-      moved[static_cast<std::size_t>(j)] += h;
-      D.col(j++) = (residual(moved) - r_at) / h;
+      const bool narrow = e + 2 < ends.size() && ends[e + 1] != pi &&
+                          length(e) < narrow_stretch * std::min(length(e - 1), length(e + 1));
+      if (!narrow) {
+        const double h = 1e-7 * std::min(length(e - 1), length(e));
+        D.col(j) = column(j, 1, j, 0, h);
+        ++j;
+        continue;
+      }
+      // Ends a = j and b = j + 1 moved by da = s - w/2, db = s + w/2: the columns are
+      // J_s/2 - J_w and J_s/2 + J_w.
+      const Eigen::VectorXd shift = column(j, 1, j + 1, 1, 1e-7 * std::min(length(e - 1), length(e + 1)));
+      const Eigen::VectorXd widen = column(j, -0.5, j + 1, 0.5, 1e-3 * length(e));
+      D.col(j) = shift / 2 - widen;
+      D.col(j + 1) = shift / 2 + widen;
+      j += 2, ++e;
     }
     return D;
   };
@@ -457,6 +480,59 @@ std::optional<ContactSolver::State> ContactSolver::advance(const State& from, do
   return std::nullopt;
 }
 
+// A gap of width w between two zones closes like the root of the load to go, w^2 ~ P_m - P:
+// the ends move ever faster per load, their Jacobian turns singular, and the steps towards
+// P_m shrink without reaching it. Beyond P_m the merged zones are the contact, with the
+// lowest pressure of the merged zone (at the former gap) growing from 0 at P_m: P_m by the
+// secant method on that pressure, from the estimate of w^2 linear in the load.
+std::optional<ContactSolver::State> ContactSolver::merge_ahead(const State& from, const State& before,
+                                                               double limit) const {
+  if (!same_topology(before.zones, from.zones) || !(before.P < from.P)) return std::nullopt;
+  std::size_t closing = from.zones.size();
+  double merge_load = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < from.zones.size(); ++k) {
+    const double w = from.zones[k + 1].lo - from.zones[k].hi, w_before = before.zones[k + 1].lo - before.zones[k].hi;
+    const double zone = std::min(from.zones[k].hi - from.zones[k].lo, from.zones[k + 1].hi - from.zones[k + 1].lo);
+    if (!(w < w_before) || !(w < merge_ahead_ratio * zone)) continue;
+    const double estimate = from.P + w * w * (from.P - before.P) / (w_before * w_before - w * w);
+    if (estimate < merge_load) merge_load = estimate, closing = k;
+  }
+  if (closing == from.zones.size()) return std::nullopt;
+  std::vector<Zone> merged = from.zones;
+  merged[closing].hi = merged[closing + 1].hi;
+  merged.erase(merged.begin() + static_cast<std::ptrdiff_t>(closing) + 1);
+  const Zone zone = merged[closing];
+  // The lowest pressure on the merged zone, relative to the largest pressure.
+  auto lowest = [&](const IntervalInversion& inversion) {
+    double highest = 0, low = 0;
+    for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+    const auto pressure = [&](double x) { return inversion.pressure(x); };
+    for (const auto& m : local_minima(inversion.pressure_samples(), pressure, 0.0)) {
+      if (m.x > zone.lo && m.x < zone.hi) low = std::min(low, m.value);
+    }
+    return low / highest;
+  };
+  double P_low = from.P, f_low = std::numeric_limits<double>::quiet_NaN();
+  double P = std::min(limit, std::max(merge_load, from.P * (1 + 1e-6)));
+  for (int iteration = 0; iteration < 12 && P > from.P && P <= limit; ++iteration) {
+    std::optional<State> state = settle(merged, P, {});
+    if (!state || state->zones.size() != merged.size()) return std::nullopt;
+    const double f = lowest(*state->inversion);
+    if (!(f < -pressure_tolerance)) {
+      const Check c = check(*state->inversion);
+      return c.pressure_ok && c.penetrations.empty() ? state : std::nullopt;
+    }
+    // Below P_m: the secant through the last two loads below it (the first from the
+    // estimate's step), aiming a thousandth of the step beyond the root.
+    const double next = std::isnan(f_low) ? P + 2 * (P - P_low) : P - f * (P - P_low) / (f - f_low);
+    P_low = P, f_low = f;
+    if (!(next > P)) return std::nullopt;
+    P = std::min(limit, next + 1e-3 * (next - P));
+    if (P == P_low) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 SolvedContact ContactSolver::refine(const State& state) const {
   std::vector<Zone> zones = state.zones;
   Eigen::MatrixXd jacobian = state.jacobian;
@@ -543,6 +619,7 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
     while (state->P < target) {
       const double next = std::min(target, state->P * (1 + ratio));
       std::optional<State> reached = advance(*state, next, before ? &*before : nullptr);
+      if (!reached && before) reached = merge_ahead(*state, *before, target);
       if (!reached) {
         ratio /= 4;
         if (ratio < smallest_step) {
@@ -558,9 +635,11 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
       } else {
         before.reset();
       }
-      const bool full_step = reached->P == next;
+      // A full step, or a merge ahead beyond it, lengthens the next.
+      const double reached_ratio = reached->P / state->P - 1;
+      const bool full_step = reached->P >= next;
       state = std::move(reached);
-      if (full_step) ratio = std::min(4.0, ratio * 2);
+      if (full_step) ratio = std::clamp(std::max(ratio * 2, reached_ratio), ratio, 4.0);
     }
     solved[index] = refine(*state);
   }

@@ -7,12 +7,13 @@
 // point of the surface. The contact set grows with the load (the obstacle problem's
 // comparison principle), so the events are: the gap reaching 0 off the zones (a zone opens
 // there: the load of the event is located by the secant method on the lowest gap, and the
-// new zone starts small just past it), a gap between zones closing (they merge), a zone
-// reaching the top or the valley, and full contact, whose onset load is known in closed form
-// (p = P/(2 pi) + p0 in full contact). Every accepted state is checked: p >= 0 on the zones
-// and gap >= 0 off them (a penetration only if the polishing order confirms it). Where one
-// zone at the top is admissible at the load it is the answer (the solution is unique) and no
-// continuation is needed.
+// new zone starts small just past it), a gap between zones closing (they merge; where the
+// steps approach the closing without reaching it, beyond it by the secant method on the
+// merged zone's lowest pressure), a zone reaching the top or the valley, and full contact,
+// whose onset load is known in closed form (p = P/(2 pi) + p0 in full contact). Every
+// accepted state is checked: p >= 0 on the zones and gap >= 0 off them (a penetration only
+// if the polishing order confirms it). Any admissible state is the contact at its load (the
+// solution is unique): where one zone at the top is admissible no continuation is needed.
 #pragma once
 
 #include <memory>
@@ -84,6 +85,9 @@ class ContactSolver {
   // One step of the continuation from an admissible state to the load P: a state at P, or at
   // a load in between (the load of an event), or nothing (the step was too long).
   std::optional<State> advance(const State& from, double P, const State* before) const;
+  // Past the merge of two zones whose gap closes between `before` and `from` (same zones):
+  // the merged contact at a load in (from.P, limit], or nothing.
+  std::optional<State> merge_ahead(const State& from, const State& before, double limit) const;
   SolvedContact refine(const State& state) const;
 
   SurfaceSlope surface_;
