@@ -29,6 +29,7 @@ constexpr double residual_tolerance = 1e-14;  // residuals are relative to their
 constexpr double stagnation_floor = 1e-9;      // below it, a stalled Newton step is rounding
 constexpr double pressure_tolerance = 1e-9;   // p >= -this * max p on the zones
 constexpr double penetration_tolerance = 1e-9;  // gap >= -this * (max y - min y) off them
+constexpr double confirmed_depth = 1e-6;  // of max y - min y: shallower, checked at order 12
 constexpr int topology_changes = 16;
 constexpr int max_zones = 64;  // in half a period
 constexpr double merge_ratio = 1e-2;  // a gap this much narrower than its zones may merge
@@ -353,16 +354,18 @@ ContactSolver::Check ContactSolver::check(const IntervalInversion& inversion) co
   const double floor = -penetration_tolerance * height_range_;
   const auto gap = [&](double x) { return inversion.gap(x); };
   // Next to a zone end, where the gap rises like the 3/2 power of the distance, the
-  // continuation's order errs in it by up to about 2e-8 of the height range: a penetration
-  // holds only if the same zones at the polishing order confirm it.
+  // continuation's order errs in it by up to about 2e-8 of the height range: a shallow
+  // penetration holds only if the same zones at the polishing order confirm it.
   std::optional<IntervalInversion> polished;
   for (const IntervalInversion::Sample& m : local_minima(inversion.gap_samples(), gap, 0.0)) {
     if (!(m.value < floor)) continue;
-    if (!polished) {
-      polished.emplace(surface_, inversion.zones(), first_order, IntervalInversion::Grading::evaluation);
-      polished->prepare(2 * polished->half_load());
+    if (m.value > -confirmed_depth * height_range_) {
+      if (!polished) {
+        polished.emplace(surface_, inversion.zones(), first_order, IntervalInversion::Grading::evaluation);
+        polished->prepare(2 * polished->half_load());
+      }
+      if (!(polished->gap(m.x) < floor)) continue;
     }
-    if (!(polished->gap(m.x) < floor)) continue;
     // The gap near its lowest point is a parabola; the zone starts at 0.7 of the stretch
     // where it is negative (a Hertzian zone is narrower than the overlap).
     const double h = std::min(surface_.resolution, pi) * 1e-3;

@@ -11,8 +11,8 @@
 // steps approach the closing without reaching it, beyond it by the secant method on the
 // merged zone's lowest pressure), a zone reaching the top or the valley, and full contact,
 // whose onset load is known in closed form (p = P/(2 pi) + p0 in full contact). Every
-// accepted state is checked: p >= 0 on the zones and gap >= 0 off them (a penetration only
-// if the polishing order confirms it). Any admissible state is the contact at its load (the
+// accepted state is checked: p >= 0 on the zones and gap >= 0 off them (a shallow penetration
+// only if the polishing order confirms it). Any admissible state is the contact at its load (the
 // solution is unique): where one zone at the top is admissible no continuation is needed.
 #pragma once
 
