@@ -72,6 +72,19 @@ std::vector<Zone> with_zones(std::vector<Zone> zones, const std::vector<Zone>& a
   return merged;
 }
 
+// Zones k and k + 1 as one (the gap between them closed).
+void merge_with_next(std::vector<Zone>& zones, std::size_t k) {
+  zones[k].hi = zones[k + 1].hi;
+  zones.erase(zones.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+}
+
+// The largest pressure at the samples of a prepared inversion (0 if none is positive).
+double highest_pressure(const IntervalInversion& inversion) {
+  double highest = 0;
+  for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+  return highest;
+}
+
 // The highest point (x^) and the height range of the surface: a scan refined by Brent's method.
 struct HeightScan {
   double top_angle, range;
@@ -306,8 +319,7 @@ std::optional<ContactSolver::State> ContactSolver::settle(std::vector<Zone> zone
         return State{zones, P, std::move(jacobian), std::move(inversion)};
       }
       case Outcome::merge:
-        zones[result.index].hi = zones[result.index + 1].hi;
-        zones.erase(zones.begin() + static_cast<std::ptrdiff_t>(result.index) + 1);
+        merge_with_next(zones, result.index);
         break;
       case Outcome::top:
         zones.front().lo = 0;
@@ -326,8 +338,7 @@ std::optional<ContactSolver::State> ContactSolver::settle(std::vector<Zone> zone
           if (gap < ratio * zone) ratio = gap / zone, narrowest = k;
         }
         if (narrowest == zones.size()) return std::nullopt;
-        zones[narrowest].hi = zones[narrowest + 1].hi;
-        zones.erase(zones.begin() + static_cast<std::ptrdiff_t>(narrowest) + 1);
+        merge_with_next(zones, narrowest);
         break;
       }
     }
@@ -345,8 +356,7 @@ ContactSolver::Check ContactSolver::check(const IntervalInversion& inversion) co
         "beyond the solver's range; a smaller load or fewer, larger asperities are within it");
   }
   Check result{true, {}};
-  double highest = 0;
-  for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+  const double highest = highest_pressure(inversion);
   const auto pressure = [&](double x) { return inversion.pressure(x); };
   for (const IntervalInversion::Sample& m : local_minima(inversion.pressure_samples(), pressure, 0.0)) {
     result.pressure_ok = result.pressure_ok && !(m.value < -pressure_tolerance * highest);
@@ -502,18 +512,16 @@ std::optional<ContactSolver::State> ContactSolver::merge_ahead(const State& from
   }
   if (closing == from.zones.size()) return std::nullopt;
   std::vector<Zone> merged = from.zones;
-  merged[closing].hi = merged[closing + 1].hi;
-  merged.erase(merged.begin() + static_cast<std::ptrdiff_t>(closing) + 1);
+  merge_with_next(merged, closing);
   const Zone zone = merged[closing];
   // The lowest pressure on the merged zone, relative to the largest pressure.
   auto lowest = [&](const IntervalInversion& inversion) {
-    double highest = 0, low = 0;
-    for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+    double low = 0;
     const auto pressure = [&](double x) { return inversion.pressure(x); };
     for (const auto& m : local_minima(inversion.pressure_samples(), pressure, 0.0)) {
       if (m.x > zone.lo && m.x < zone.hi) low = std::min(low, m.value);
     }
-    return low / highest;
+    return low / highest_pressure(inversion);
   };
   double P_low = from.P, f_low = std::numeric_limits<double>::quiet_NaN();
   double P = std::min(limit, std::max(merge_load, from.P * (1 + 1e-6)));
@@ -653,8 +661,7 @@ SingleZoneResult check_single_zone(const SurfaceSlope& surface, double a) {
   IntervalInversion inversion(surface, {{0, a}}, first_order, IntervalInversion::Grading::evaluation);
   inversion.prepare(2 * inversion.half_load());
   SingleZoneResult result{true, false, 0, 0, 0, 0};
-  double highest = 0;
-  for (const auto& s : inversion.pressure_samples()) highest = std::max(highest, s.value);
+  const double highest = highest_pressure(inversion);
   const double anything = std::numeric_limits<double>::infinity();
   for (const auto& m : local_minima(inversion.pressure_samples(), [&](double x) { return inversion.pressure(x); }, anything)) {
     if (m.value < result.lowest_pressure) result.lowest_pressure = m.value, result.x_of_lowest_pressure = m.x;
