@@ -53,7 +53,7 @@ function(wavecontact_generate)
     list(APPEND include_dirs "${out}")
   endif()
   if(ARG_PROFILE)
-    # Its own directory: each wavecontact-derive run replaces its output directory whole.
+    # Its own directory, apart from the roughness evaluators'.
     set(profile_out "${out}/profile_${ARG_PROFILE}")
     set(arguments --profile "${ARG_EXPRESSION}" --name "${ARG_PROFILE}")
     foreach(p IN LISTS ARG_PARAMETERS)

@@ -1,14 +1,28 @@
 // wavecontact-derive: re-runs the derivations of the seed paper with GiNaC and writes
 // the emitted evaluators and the manifest into generated/ (or --out DIR).
+// Exit statuses: common/exit_status.hpp (docs/cli.md).
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "decimal_option.hpp"
+#include "exit_status.hpp"
 #include "generate.hpp"
 #include "output.hpp"
 #include "resource_budget.hpp"
+
+namespace {
+
+namespace status = wavecontact::exit_status;
+
+int fail(int code, const std::string& message) {
+  std::cerr << "wavecontact-derive: " << message << "\n";
+  return code;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -17,8 +31,14 @@ int main(int argc, char** argv) {
       "evaluators and a manifest of every derived expression."};
   std::string out = "generated";
   std::vector<int> ns;
-  app.add_option("--out", out, "output directory (created if missing; updated atomically)")
+  bool force = false;
+  app.add_option("--out", out,
+                 "output directory (created if missing); only the files written are replaced, each in one "
+                 "rename")
       ->capture_default_str();
+  app.add_flag("--force", force,
+               "write into --out even if it is the root, current or home directory, or a non-empty "
+               "directory without a manifest of wavecontact-derive");
   app.add_option("--n", ns,
                  "write only the roughness evaluators roughness_n<N>.hpp for these even n "
                  "(2 <= n <= 4096, repeatable); without it, everything in generated/");
@@ -41,21 +61,27 @@ int main(int argc, char** argv) {
   double max_seconds = 60;
   long max_memory_mb = 4096;
   app.add_option("--max-seconds", max_seconds,
-                 "time budget of the derivation: beyond it, exit 2 and nothing written")
+                 "time budget of the derivation, 0 < s <= 86400: beyond it, exit 4 and nothing written")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-3, 86400.0));
   app.add_option("--max-memory-mb", max_memory_mb,
-                 "memory budget (address space) of the derivation: beyond it, exit 2")
+                 "memory budget (address space) of the derivation: beyond it, exit 4")
       ->capture_default_str()
       ->check(CLI::Range(64L, 1L << 20));
   profile->needs(profile_name);
   profile_name->needs(profile);
   parameter->needs(profile);
   profile->excludes(app.get_option("--n"));
-  CLI11_PARSE(app, argc, argv);
-
+  wavecontact::cli_common::require_decimal_numbers(app);
   try {
-    namespace derive = wavecontact::derive;
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help
+    return fail(status::bad_argument, wavecontact::cli_common::shortened(e.what()));
+  }
+
+  namespace derive = wavecontact::derive;
+  try {
     std::vector<derive::GeneratedFile> files;
     if (profile->count() > 0) {
       derive::ProfileSpec spec{name, expression, {}};
@@ -65,23 +91,22 @@ int main(int argc, char** argv) {
         command += " --param " + p;
       }
       const derive::ResourceBudget budget(max_seconds, max_memory_mb,
-                                          "profile " + name + " = \"" + expression + "\"");
+                                          "profile " + name + " = \"" + wavecontact::cli_common::shortened(expression) + "\"");
       files = derive::generate_profile(spec, command + " --name " + name + " --out DIR");
     } else {
       const derive::ResourceBudget budget(max_seconds, max_memory_mb, "the generated set");
       files = ns.empty() ? derive::generate_all() : derive::generate_roughness(ns);
     }
-    derive::write_directory_atomically(out, files);
+    derive::write_generated_files(out, files, force);
   } catch (const std::bad_alloc&) {
-    std::cerr << "wavecontact-derive: the derivation exceeds its memory budget of "
-              << max_memory_mb << " MB (--max-memory-mb); nothing is written\n";
-    return 2;
-  } catch (const std::invalid_argument& e) {  // the input is refused; nothing is written
-    std::cerr << "wavecontact-derive: " << e.what() << "\n";
-    return 2;
+    return fail(status::beyond_reach, "the derivation exceeds its memory budget of " + std::to_string(max_memory_mb) +
+                                          " MB (--max-memory-mb); nothing is written");
+  } catch (const derive::OutputError& e) {
+    return fail(status::io_error, e.what());
+  } catch (const std::invalid_argument& e) {  // the input or --out is refused; nothing is written
+    return fail(status::bad_argument, e.what());
   } catch (const std::exception& e) {
-    std::cerr << "wavecontact-derive: " << e.what() << "\n";
-    return 1;
+    return fail(status::internal_error, std::string("internal error: ") + e.what());
   }
-  return 0;
+  return status::success;
 }

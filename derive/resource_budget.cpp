@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "exit_status.hpp"
+
 namespace wavecontact::derive {
 
 namespace {
@@ -45,7 +47,7 @@ ResourceBudget::ResourceBudget(double seconds, long megabytes, std::string what)
                  "order derive faster\n",
                  what.c_str(), seconds);
     std::fflush(stderr);
-    std::_Exit(2);
+    std::_Exit(exit_status::beyond_reach);
   });
 }
 
