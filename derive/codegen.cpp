@@ -422,18 +422,21 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
      << counts.square_roots << " sqrt, " << counts.negations << " neg"
      << (counts.calls > 0 ? ", " + std::to_string(counts.calls) + " moment calls" : "") << "), "
      << counts.temporaries << " temporaries\n";
-  os << "template <typename Scalar>\ninline " << (returns_value ? "Scalar " : "void ") << f.name << "(";
-  for (std::size_t i = 0; i < f.arguments.size(); ++i) {
-    const std::string& name = GiNaC::ex_to<GiNaC::symbol>(f.arguments[i]).get_name();
-    bool used = returns_value && f.value.has(f.arguments[i]);
-    for (const auto& statement : f.statements) used = used || statement.value.has(f.arguments[i]);
-    for (const auto& output : f.outputs) used = used || output.has(f.arguments[i]);
-    os << (i ? ", " : "") << "const Scalar& " << (used ? name : "/*" + name + "*/");
+  std::vector<std::string> parameters;  // a profile without parameters has none but out
+  for (const ex& argument : f.arguments) {
+    const std::string& name = GiNaC::ex_to<GiNaC::symbol>(argument).get_name();
+    bool used = returns_value && f.value.has(argument);
+    for (const auto& statement : f.statements) used = used || statement.value.has(argument);
+    for (const auto& output : f.outputs) used = used || output.has(argument);
+    parameters.push_back("const Scalar& " + (used ? name : "/*" + name + "*/"));
   }
   for (const std::string& array : f.arrays) {
-    os << ", const Scalar* " << (used_arrays.count(array) ? array : "/*" + array + "*/");
+    parameters.push_back("const Scalar* " + (used_arrays.count(array) ? array : "/*" + array + "*/"));
   }
-  os << (returns_value ? "" : ", Scalar* out") << ") {\n  using std::sqrt;\n" << body << "}\n";
+  if (!returns_value) parameters.push_back("Scalar* out");
+  os << "template <typename Scalar>\ninline " << (returns_value ? "Scalar " : "void ") << f.name << "(";
+  for (std::size_t i = 0; i < parameters.size(); ++i) os << (i ? ", " : "") << parameters[i];
+  os << ") {\n  using std::sqrt;\n" << body << "}\n";
   if (!returns_value) os << "inline constexpr int " << f.name << "_outputs = " << f.outputs.size() << ";\n";
   if (out_counts) *out_counts = counts;
   return os.str();

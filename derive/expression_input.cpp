@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
@@ -69,8 +70,9 @@ class Lexer {
         ++i;
       } else {
         std::ostringstream os;
-        os << "character '" << (std::isprint(static_cast<unsigned char>(c)) ? std::string(1, c)
-                                                                           : "\\x?")
+        char code[8];
+        std::snprintf(code, sizeof code, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
+        os << "character '" << (std::isprint(static_cast<unsigned char>(c)) ? std::string(1, c) : std::string(code))
            << "'" << position(i)
            << " is not allowed (letters, digits, _, blanks and + - * / ^ ( ) .)";
         refuse(os.str());

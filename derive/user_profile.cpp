@@ -27,8 +27,39 @@ const std::regex identifier("[A-Za-z][A-Za-z0-9_]{0,63}");
 const std::set<std::string> reserved{"x", "v", "u", "s", "t", "alpha", "E", "b1", "Ca",
                                      "Sa", "Cx", "Sx", "D", "Pi", "I", "Scalar"};
 
+// Names a parameter (an argument of the emitted C++) may not take: the language's keywords
+// and alternative tokens, the emitted code's own names (out, A, work, atoms, y, one_plus_y,
+// the functions it calls unqualified, its namespaces) and lower-case macros of the C library.
+const std::set<std::string> cpp_names{
+    "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
+    "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr",
+    "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete",
+    "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for",
+    "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
+    "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
+    "requires", "return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct",
+    "switch", "template", "this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename",
+    "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq",
+    "out", "A", "work", "atoms", "y", "one_plus_y", "sqrt", "fabs", "fma", "std", "wavecontact", "generated",
+    "errno", "assert", "stdin", "stdout", "stderr", "offsetof", "main"};
+
+// All capitals (NULL, EOF, INFINITY, M_PI, ...): left to macros.
+bool macro_like(const std::string& name) {
+  int capitals = 0;
+  for (char c : name) {
+    if (c >= 'A' && c <= 'Z') {
+      ++capitals;
+    } else if (!(c >= '0' && c <= '9') && c != '_') {
+      return false;
+    }
+  }
+  return capitals >= 2;
+}
+
 [[noreturn]] void refuse(const ProfileSpec& spec, const std::string& why) {
-  throw InputRefused("profile " + spec.name + " = \"" + spec.expression + "\": " + why);
+  const std::string& text = spec.expression;  // echoed up to 200 characters
+  const std::string shown = text.size() <= 200 ? text : text.substr(0, 200) + "... (" + std::to_string(text.size()) + " characters)";
+  throw InputRefused("profile " + spec.name + " = \"" + shown + "\": " + why);
 }
 
 std::string str(const ex& e) {
@@ -71,6 +102,13 @@ void check_names(const ProfileSpec& spec) {
       refuse(spec, "parameter \"" + p.name + "\" is reserved (x is the coordinate; E, b1 and "
                    "the angle atoms Ca Sa Cx Sx D are arguments of the emitted evaluators)");
     }
+    if (cpp_names.count(p.name)) {
+      refuse(spec, "parameter \"" + p.name + "\" is a C++ keyword or a name of the emitted code; rename it");
+    }
+    if (macro_like(p.name)) {
+      refuse(spec, "parameter \"" + p.name + "\" is all capitals, which C and C++ leave to macros (NULL, "
+                   "EOF, INFINITY); rename it");
+    }
     if (!seen.insert(p.name).second) refuse(spec, "parameter \"" + p.name + "\" is given twice");
   }
 }
@@ -78,8 +116,11 @@ void check_names(const ProfileSpec& spec) {
 // A profile without a separate cosine sum goes whole through the partial fractions.
 void check_whole_order(const ProfileSpec& spec, const ex& Y) {
   const GiNaC::symbol& c = sym::Cx();
-  const ex nd = Y.numer_denom();
-  const long order = std::max(nd.op(0).degree(c), nd.op(1).degree(c));
+  const ex nd = Y.normal().numer_denom();
+  const ex denominator = nd.op(1).expand();
+  // A denominator led by a number (1/(2 + cos x)^32) keeps only the general bound.
+  if (denominator.degree(c) == 0 || GiNaC::is_a<numeric>(denominator.lcoeff(c))) return;
+  const long order = std::max(nd.op(0).degree(c), denominator.degree(c));
   if (order > expression_limits::max_whole_order) {
     refuse(spec, "its order in cos x is " + std::to_string(order) + ", beyond " +
                      std::to_string(expression_limits::max_whole_order) +

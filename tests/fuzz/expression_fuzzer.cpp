@@ -7,7 +7,17 @@
 // well under the per-input timeout under the sanitizers (<= 2 parameters, order <= 8, or 4
 // with abs(), or a cosine sum of order <= 64, which splits off whole: derive/harmonic_part.hpp);
 // beyond that, the tool's time and memory budget (resource_budget.hpp) bounds it.
+//
+// Every emitted header must compile (issue 28: profiles without parameters emitted
+// "f(, Scalar* out)"): the first derived input and every 16th after it are written out and
+// compiled with -Wall -Wextra -Werror -pedantic; a failure is a finding.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstddef>
+#include <filesystem>
+#include <fstream>
 #include <cstdint>
 #include <cstdlib>
 #include <sstream>
@@ -19,6 +29,8 @@
 #include "generate.hpp"
 #include "symbols.hpp"
 #include "user_profile.hpp"
+
+extern char** environ;
 
 namespace derive = wavecontact::derive;
 
@@ -50,6 +62,26 @@ bool derivable(const derive::ProfileSpec& spec) {
   }
 }
 
+// Compiles the emitted header under the strict flags; aborts if it does not.
+void require_compiles(const std::string& header) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("wavecontact_fuzz_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "profile_fuzz.hpp") << header;
+  std::ofstream(dir / "main.cpp") << "#include \"profile_fuzz.hpp\"\n";
+  std::vector<std::string> words{WAVECONTACT_FUZZ_CXX, "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra",
+                                 "-Werror", "-pedantic", "-I" WAVECONTACT_RUNTIME_INCLUDE,
+                                 "-I" WAVECONTACT_GENERATED_DIR, "-I" + dir.string(), (dir / "main.cpp").string()};
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) std::abort();
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) std::abort();  // the header is in dir
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -69,6 +101,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (files.size() != 2 || files[0].contents.find("#pragma once") == std::string::npos) {
       std::abort();
     }
+    static int derived = 0;
+    if (derived++ % 16 == 0) require_compiles(files[0].contents);
   } catch (const std::invalid_argument&) {
   }
   return 0;
