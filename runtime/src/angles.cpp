@@ -63,6 +63,16 @@ PointAngles point_angles(double x, double a, double b1) {
   return {zx.c, zx.one_minus_c, D};
 }
 
-double reduce_to_period(double x, double b1) { return x - 2 * b1 * std::round(x / (2 * b1)); }
+double reduce_to_period(double x, double b1) {
+  // fmod is exact, and so are the shifts by the period: every finite x maps to its point.
+  const double period = 2 * b1;
+  double r = std::fmod(x, period);  // in (-period, period), the sign of x
+  if (r > b1) {
+    r -= period;
+  } else if (r < -b1) {
+    r += period;
+  }
+  return r;
+}
 
 }  // namespace wavecontact

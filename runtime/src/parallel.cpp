@@ -22,9 +22,10 @@ int default_threads() {
     if (const char* value = std::getenv("WAVECONTACT_THREADS"); value != nullptr && *value != '\0') {
       char* end = nullptr;
       const long n = std::strtol(value, &end, 10);
-      if (*end != '\0' || n < 1 || n > 4096) {
+      if (*end != '\0' || n < 1 || n > max_array_kernel_threads) {
         throw std::domain_error(std::string("wavecontact::array_kernel_threads: WAVECONTACT_THREADS = ") + value +
-                                " is invalid (valid: an integer from 1 to 4096, or unset)");
+                                " is invalid (valid: an integer from 1 to " + std::to_string(max_array_kernel_threads) +
+                                ", or unset)");
       }
       return static_cast<int>(n);
     }
@@ -41,8 +42,9 @@ int array_kernel_threads() {
 }
 
 void set_array_kernel_threads(int threads) {
-  if (threads < 0) {
-    detail::domain_error("wavecontact::set_array_kernel_threads", "threads", threads, ">= 1, or 0 for the default");
+  if (threads < 0 || threads > max_array_kernel_threads) {
+    detail::domain_error("wavecontact::set_array_kernel_threads", "threads", threads,
+                         "1 <= threads <= " + std::to_string(max_array_kernel_threads) + ", or 0 for the default");
   }
   chosen_threads.store(threads, std::memory_order_relaxed);
 }

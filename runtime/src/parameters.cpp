@@ -17,10 +17,12 @@ double reduced_modulus(double E1, double nu1, double E2, double nu2) {
 }
 
 void validate(const WavinessParams& p, const char* function) {
-  detail::require_positive(function, "H1", p.H1);
-  detail::require_positive(function, "b1", p.b1);
-  detail::require_positive(function, "E", p.E);
-  if (!(std::isfinite(p.m) && p.m >= 0)) detail::domain_error(function, "m", p.m, ">= 0, finite");
+  detail::require_scale(function, "H1", p.H1);
+  detail::require_scale(function, "b1", p.b1);
+  detail::require_scale(function, "E", p.E);
+  if (!(std::isfinite(p.m) && p.m >= 0 && p.m <= max_shape)) {
+    detail::domain_error(function, "m", p.m, "0 <= m <= " + detail::format(max_shape));
+  }
 }
 
 }  // namespace wavecontact

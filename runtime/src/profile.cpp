@@ -167,12 +167,9 @@ bool Profile::beyond_branch(double Ca) const {
 
 void Profile::check_half_width(const char* function, double a, bool closed) const {
   const bool full = closed && reach_ == params_.b1;
-  if (!(std::isfinite(a) && a > 0 && (a < reach_ || (full && a == reach_)))) {
-    const std::string bound = reach_ == params_.b1
-                                  ? "b1 = " + detail::format(reach_)
-                                  : detail::format(reach_) + ", where the profile has a pole";
-    detail::domain_error(function, "a", a, std::string("0 < a ") + (full ? "<= " : "< ") + bound);
-  }
+  detail::require_half_width(function, a, params_.b1, reach_, full,
+                             reach_ == params_.b1 ? "b1 = " + detail::format(reach_)
+                                                  : detail::format(reach_) + ", where the profile has a pole");
 }
 
 double Profile::pressure(double a, double x) const {

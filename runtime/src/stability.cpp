@@ -93,9 +93,7 @@ double unique_half_width(const char* function, const LoadCurve& curve, double P)
 Admissibility admissibility(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::admissibility";
   validate(params, function);
-  if (!(std::isfinite(a) && a > 0 && a < params.b1)) {
-    detail::domain_error(function, "a", a, "0 < a < b1 = " + detail::format(params.b1));
-  }
+  detail::require_half_width(function, a, params.b1, params.b1, false, "b1 = " + detail::format(params.b1));
   std::vector<double> xs = zone_points(a);
   const double kink = params.b1 / 2;
   if (a > kink) {
@@ -121,6 +119,7 @@ Admissibility admissibility(const Profile& profile, double a) {
 LoadCurve::LoadCurve(const WavinessParams& params)
     : load_([params](double a) { return load(params, a); }),
       admissible_([params](double a) { return admissibility(params, a).admissible; }),
+      b1_(params.b1),
       end_(params.b1) {
   validate(params, "wavecontact::LoadCurve");
   // dP/da = (pi/b1) sin(pi a/b1) F(a) has the sign of the slope factor F, r = a/b1 in (0, 1];
@@ -132,6 +131,7 @@ LoadCurve::LoadCurve(const WavinessParams& params)
 LoadCurve::LoadCurve(const Profile& profile)
     : load_([profile](double a) { return profile.load(a); }),
       admissible_([profile](double a) { return admissibility(profile, a).admissible; }),
+      b1_(profile.params().b1),
       // Short of a pole, where the load grows without bound.
       end_(profile.reach() < profile.params().b1 ? profile.reach() * (1 - 1e-9) : profile.reach()) {
   // dP/da = (pi/b1) sin(pi a/b1) F(a) vanishes at a = b1 through the sine: step back from it.
@@ -175,7 +175,14 @@ void LoadCurve::locate_turning_points(const std::function<double(double)>& slope
 }
 
 std::vector<Equilibrium> LoadCurve::equilibria(double P) const {
-  detail::require_positive("wavecontact::LoadCurve::equilibria", "P", P);
+  constexpr const char* function = "wavecontact::LoadCurve::equilibria";
+  // The load of the narrowest zone the half-widths allow (parameters.hpp).
+  const double lowest = load_(min_half_width_ratio * b1_);
+  if (!(std::isfinite(P) && P >= lowest)) {
+    detail::domain_error(function, "P", P,
+                         "P >= " + detail::format(lowest) + ", the load of the narrowest zone a = " +
+                             detail::format(min_half_width_ratio) + " b1");
+  }
   std::vector<Equilibrium> result;
   for (std::size_t i = 1; i < turning_points_.size(); ++i) {
     const double lo = turning_points_[i - 1], hi = turning_points_[i];

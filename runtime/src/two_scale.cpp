@@ -54,7 +54,7 @@ std::map<int, RoughnessEvaluator>& registry() {
 }  // namespace
 
 void validate(const RoughnessParams& r, const char* function) {
-  if (!(std::isfinite(r.H2) && r.H2 >= 0)) detail::domain_error(function, "H2", r.H2, ">= 0, finite");
+  detail::require_scale(function, "H2", r.H2, true);
   if (r.n < 2 || r.n % 2 != 0 || r.n > max_roughness_n) {
     detail::domain_error(function, "n", r.n,
                          "an even integer, 2 <= n <= " + std::to_string(max_roughness_n) +
@@ -125,12 +125,11 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
   validate(w, function);
   validate(params.roughness, function);
   // The roughness solution holds for any zone; the printed eq. 19/20 only up to b1/2.
-  if (form == Form::exact && !(std::isfinite(a) && a > 0 && a < w.b1)) {
-    detail::domain_error(function, "a", a, "0 < a < b1 = " + detail::format(w.b1));
-  }
-  if (form == Form::paper && !(std::isfinite(a) && a > 0 && a <= w.b1 / 2)) {
-    detail::domain_error(function, "a", a,
-                         "0 < a <= b1/2 = " + detail::format(w.b1 / 2) + " (printed eq. 19/20)");
+  if (form == Form::exact) {
+    detail::require_half_width(function, a, w.b1, w.b1, false, "b1 = " + detail::format(w.b1));
+  } else {
+    detail::require_half_width(function, a, w.b1, w.b1 / 2, true,
+                               "b1/2 = " + detail::format(w.b1 / 2) + " (printed eq. 19/20)");
   }
   zone_ = zone_angles(a, w.b1);
   waviness_load_ = wavecontact::load(w, a);  // the printed eq. 13 has the same load (derive/)
@@ -277,6 +276,13 @@ std::vector<Equilibrium> two_scale_half_widths(const TwoScaleParams& params, dou
     return load(params.waviness, a) +
            evaluator.load(params.waviness.E, params.roughness.H2, zone.Ca, zone.Sa) - P;
   };
+  // The load of the narrowest zone the half-widths allow (parameters.hpp).
+  const double lowest = residual(min_half_width_ratio * b1) + P;
+  if (!(P >= lowest)) {
+    detail::domain_error(function, "P", P,
+                         "P >= " + detail::format(lowest) + ", the load of the narrowest zone a = " +
+                             detail::format(min_half_width_ratio) + " b1");
+  }
   auto equilibrium = [&](double a, bool rising) {
     return Equilibrium{a, rising, TwoScaleContact(params, a).admissible()};
   };

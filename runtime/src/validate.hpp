@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -11,16 +12,22 @@
 #include <Eigen/Core>
 
 #include "pressure_simd.hpp"
+#include "wavecontact/parameters.hpp"
 
 namespace wavecontact::detail {
 
+// The shortest decimal that reads back as `value` (1e-20, not 9.9999999999999995e-21; 10, not
+// 1e+01), whatever the locale.
+inline std::string format(double value) {
+  char text[32];
+  const std::to_chars_result end = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, end.ptr);
+}
+
 [[noreturn]] inline void domain_error(const char* function, const char* parameter, double value,
                                       const std::string& valid) {
-  std::ostringstream os;
-  os.precision(17);
-  os << function << ": " << parameter << " = " << value << " is invalid (valid: " << valid
-     << ")";
-  throw std::domain_error(os.str());
+  throw std::domain_error(std::string(function) + ": " + parameter + " = " + format(value) + " is invalid (valid: " +
+                          valid + ")");
 }
 
 inline void require_finite(const char* function, const char* parameter, double value) {
@@ -29,6 +36,28 @@ inline void require_finite(const char* function, const char* parameter, double v
 
 inline void require_positive(const char* function, const char* parameter, double value) {
   if (!(std::isfinite(value) && value > 0)) domain_error(function, parameter, value, "> 0, finite");
+}
+
+// A dimensional parameter within [min_scale, max_scale] (parameters.hpp), or also 0 where
+// `zero_allowed` (a roughness height).
+inline void require_scale(const char* function, const char* parameter, double value, bool zero_allowed = false) {
+  if (zero_allowed && value == 0) return;
+  if (!(std::isfinite(value) && value >= min_scale && value <= max_scale)) {
+    domain_error(function, parameter, value,
+                 std::string(zero_allowed ? "0 or " : "") + format(min_scale) + " <= " + parameter + " <= " +
+                     format(max_scale));
+  }
+}
+
+// A zone's half-width: min_half_width_ratio b1 <= a < upper (<= upper where `closed`);
+// `upper_text` says what the upper bound is.
+inline void require_half_width(const char* function, double a, double b1, double upper, bool closed,
+                               const std::string& upper_text) {
+  const double lowest = min_half_width_ratio * b1;
+  if (!(std::isfinite(a) && a >= lowest && (a < upper || (closed && a == upper)))) {
+    domain_error(function, "a", a, format(lowest) + " = " + format(min_half_width_ratio) + " b1 <= a " +
+                                       (closed ? "<= " : "< ") + upper_text);
+  }
 }
 
 // Whether x[i], i < count, are all finite: the vector units' test where the CPU has them (at
@@ -55,13 +84,6 @@ inline void require_finite_points(const char* function, const Eigen::Ref<const E
 inline void require_points(const char* function, const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Index p_size) {
   require_same_size(function, x, p_size);
   if (!all_finite(x.data(), static_cast<std::size_t>(x.size()))) require_finite_points(function, x);
-}
-
-inline std::string format(double value) {
-  std::ostringstream os;
-  os.precision(17);
-  os << value;
-  return os.str();
 }
 
 }  // namespace wavecontact::detail

@@ -31,12 +31,8 @@ constexpr double pi = boost::math::double_constants::pi;
 // defined while 1 + m cos(pi a/b1) > 0.
 void require_half_width(const char* function, const WavinessParams& p, double a, Form form,
                         bool full_contact_allowed = false) {
-  const bool inside = full_contact_allowed ? a <= p.b1 : a < p.b1;
-  if (!(std::isfinite(a) && a > 0 && inside)) {
-    detail::domain_error(function, "a", a,
-                         std::string("0 < a ") + (full_contact_allowed ? "<=" : "<") +
-                             " b1 = " + detail::format(p.b1) + " (one contact zone per period)");
-  }
+  detail::require_half_width(function, a, p.b1, p.b1, full_contact_allowed,
+                             "b1 = " + detail::format(p.b1) + " (one contact zone per period)");
   if (form == Form::paper && a > p.b1 / 2 && !(1 + p.m * zone_angles(a, p.b1).Ca > 0)) {
     detail::domain_error(function, "a", a,
                          "for the printed eq. 13/14, 1 + m cos(pi a/b1) > 0: beyond a = b1/2 they "

@@ -17,6 +17,17 @@ struct WavinessParams {
   double E;   // reduced modulus E* (eq. 7) [pressure]
 };
 
+// The ranges in which every result is a normal double that keeps its digits (outside them a
+// result would overflow, underflow or lose them all, and is refused with std::domain_error
+// naming the range): the dimensional parameters H1, b1, E and every roughness height
+// (or 0) within [min_scale, max_scale]; the shape 0 <= m <= max_shape (the closed forms
+// are within a few eps up to m = 1e15 against 50 digits, but beyond 1e6 the single zone's
+// admissibility hangs on height differences of 1e-15 and less); a zone's half-width
+// a >= min_half_width_ratio b1; x any finite value (reduced to the period exactly).
+inline constexpr double min_scale = 1e-50, max_scale = 1e50;
+inline constexpr double max_shape = 1e6;
+inline constexpr double min_half_width_ratio = 1e-20;
+
 // Eq. 7, plane strain: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2.
 // Throws std::domain_error for non-positive moduli or Poisson ratios outside (-1, 0.5].
 double reduced_modulus(double E1, double nu1, double E2, double nu2);

@@ -14,13 +14,15 @@ namespace wavecontact {
 inline constexpr std::size_t parallel_points = 32768;
 inline constexpr std::size_t parallel_points_costly = 64;
 
+inline constexpr int max_array_kernel_threads = 4096;
+
 // The most threads an array evaluation uses: set_array_kernel_threads(), else the environment
 // variable WAVECONTACT_THREADS (read once; std::domain_error naming it and its value unless it
-// is an integer from 1 to 4096), else the CPU's hardware threads.
+// is an integer from 1 to max_array_kernel_threads), else the CPU's hardware threads.
 int array_kernel_threads();
 
 // Caps the threads (1: the calling thread only); 0 returns to the default above. Throws
-// std::domain_error for a negative count.
+// std::domain_error for a count below 0 or above max_array_kernel_threads.
 void set_array_kernel_threads(int threads);
 
 }  // namespace wavecontact
