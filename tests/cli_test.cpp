@@ -2,8 +2,6 @@
 #define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,33 +11,21 @@
 #include <string>
 #include <vector>
 
+#include "run_command.hpp"
+
 namespace fs = std::filesystem;
 namespace tt = boost::test_tools;
 
 namespace {
 
-struct Result {
-  int status;
-  std::string out, err;
-};
+using Result = wavecontact::test::CommandResult;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
+// The command line split at spaces (no argument here has one).
 Result run(const std::string& arguments) {
-  static int counter = 0;
-  const fs::path dir = fs::temp_directory_path() / ("wavecontact_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path out = dir / ("out" + std::to_string(counter)), err = dir / ("err" + std::to_string(counter));
-  ++counter;
-  const std::string command = std::string(WAVECONTACT_CLI) + " " + arguments + " > '" +
-                              out.string() + "' 2> '" + err.string() + "'";
-  const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  std::vector<std::string> argv{WAVECONTACT_CLI};
+  std::istringstream in(arguments);
+  for (std::string word; in >> word;) argv.push_back(word);
+  return wavecontact::test::run_command(argv);
 }
 
 std::vector<std::string> lines(const std::string& text) {
@@ -249,11 +235,17 @@ BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_with_one_line_and_no_output) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
-  const fs::path out = fs::temp_directory_path() / ("wavecontact_reproduce_" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const Result r = run("reproduce --out '" + out.string() + "'");
+// Every figure, into a path a shell would misread (issue 28: the path was pasted into a shell
+// command): quotes, a semicolon, spaces; gnuplot runs with an argument vector.
+BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png_into_any_path) {
+  const fs::path base = fs::temp_directory_path() / ("wavecontact_reproduce_" + std::to_string(::getpid()));
+  const fs::path out = base / "Tsukanov's figs x';touch PWNED;'";
+  fs::remove_all(base);
+  fs::create_directories(base);
+  const Result r = wavecontact::test::run_command({WAVECONTACT_CLI, "reproduce", "--out", out.string()});
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  BOOST_TEST(!fs::exists("PWNED"));
+  BOOST_TEST(!fs::exists(base / "PWNED"));
   for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11"}) {
     for (const char* extension : {".csv", ".png"}) {
       const fs::path file = out / (std::string(figure) + extension);
@@ -263,7 +255,7 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png) {
   }
   const fs::path report = out / "REPORT.md";
   BOOST_TEST((fs::exists(report) && fs::file_size(report) > 1000), report);
-  fs::remove_all(out);
+  fs::remove_all(base);
 }
 
 BOOST_AUTO_TEST_CASE(roughness_columns_are_filled) {

@@ -9,6 +9,7 @@ namespace wavecontact::python {
 
 void bind_contact(py::module_& m) {
   using namespace py::literals;
+  py::register_exception<BeyondReach>(m, "BeyondReach", PyExc_RuntimeError);
   py::class_<Harmonic>(m, "Harmonic", "A roughness harmonic H cos(n pi x/b1), n >= 1.")
       .def(py::init([](double H, int n) { return Harmonic{H, n}; }), "H"_a, "n"_a)
       .def_readonly("H", &Harmonic::H)
@@ -71,10 +72,16 @@ void bind_contact(py::module_& m) {
 
   m.def(
       "solve_contact",
-      [](const Surface& surface, const py::handle& P, double tolerance, int order) -> py::object {
-        const SolverOptions options{tolerance, order};
+      [](const Surface& surface, const py::handle& P, double tolerance, int order, double max_seconds) -> py::object {
+        // Ctrl-C reaches the solve at its next safe point (about every tenth of a second):
+        // the checkpoint takes the GIL, and a pending KeyboardInterrupt abandons the solve.
+        SolverOptions options{tolerance, order, max_seconds};
+        options.checkpoint = [] {
+          py::gil_scoped_acquire acquire;
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
         if (py::isinstance<py::float_>(P) || py::isinstance<py::int_>(P)) {
-          const double load = P.cast<double>();
+          const double load = as_double(P, "wavecontact.solve_contact", "P");
           py::gil_scoped_release release;
           return py::cast(solve_contact(surface, load, options));
         }
@@ -92,10 +99,11 @@ void bind_contact(py::module_& m) {
         }
         return py::cast(contacts);
       },
-      "surface"_a, "P"_a, "tolerance"_a = 1e-10, "order"_a = 0,
+      "surface"_a, "P"_a, "tolerance"_a = 1e-10, "order"_a = 0, "max_seconds"_a = 60.0,
       "The contact carrying the load P > 0 per period: a Contact for a float, a list of them for "
       "a sequence or array of loads (one continuation through them). tolerance: the relative error "
-      "estimate to meet; order > 0 fixes the quadrature order.");
+      "estimate to meet; order > 0 fixes the quadrature order; max_seconds: the work budget, "
+      "beyond which BeyondReach is raised. Ctrl-C interrupts it within a second.");
   m.def("full_contact_load", &full_contact_load, "surface"_a, "The load from which the contact is full.");
 
   py::class_<SingleZoneCheck>(m, "SingleZoneCheck", "Whether one zone |x| < a is the contact.")

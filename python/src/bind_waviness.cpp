@@ -24,7 +24,8 @@ void bind_waviness(py::module_& m) {
   using namespace py::literals;
   py::enum_<Form>(m, "Form", "Which closed form: the exact solution of eq. 12, or the paper's printed eq. 13/14.")
       .value("exact", Form::exact, "the exact solution of eq. 12 (derived by wavecontact-derive)")
-      .value("paper", Form::paper, "eq. 13/14 as printed: exact only for m = 0");
+      .value("paper", Form::paper, "eq. 13/14 as printed: exact only for m = 0")
+      .def(py::init(&checked_enum<Form, 2>), "value"_a, py::prepend());
 
   py::class_<WavinessParams>(m, "WavinessParams",
                              "The parametric wave curve of eq. 2, w = H1 (m+1) cos(pi x/b1) / "
@@ -46,7 +47,8 @@ void bind_waviness(py::module_& m) {
   py::enum_<Isa>(m, "Isa", "The instruction set of the array kernels (wavecontact/isa.hpp).")
       .value("scalar", Isa::scalar, "the scalar loops")
       .value("avx2", Isa::avx2, "AVX2 + FMA kernels")
-      .value("avx512", Isa::avx512, "the same with sincospi 8 wide");
+      .value("avx512", Isa::avx512, "the same with sincospi 8 wide")
+      .def(py::init(&checked_enum<Isa, 3>), "value"_a, py::prepend());
   m.def("array_kernel_isa", &array_kernel_isa,
         "The path the array kernels run on: the best the CPU has, or WAVECONTACT_ISA "
         "(scalar, avx2, avx512) capped at it, read at the first array evaluation.");

@@ -18,16 +18,51 @@ void bind_profile(py::module_& m);
 void bind_contact(py::module_& m);
 
 // x as a C-contiguous float64 array: the caller's own memory when it already is one (no
-// copy), otherwise converted once. Whatever NumPy cannot read as numbers is a ValueError
-// naming the function and the parameter; non-finite values are the runtime's to refuse.
+// copy), otherwise converted once. Whatever is not real numbers (None, strings, complex
+// numbers, whose imaginary part a cast would drop) is a ValueError naming the function and
+// the parameter; non-finite values are the runtime's to refuse.
 inline py::array_t<double, py::array::c_style> as_points(const py::handle& x, const char* function,
                                                          const char* name) {
-  if (!x.is_none()) {  // NumPy would read None as nan
-    auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(x);
-    if (points) return points;
+  auto refuse = [&](const std::string& what) {
+    return py::value_error(std::string(function) + ": " + name + " must be a number or an array of numbers, not " +
+                           what);
+  };
+  if (x.is_none() || PyComplex_Check(x.ptr())) throw refuse(std::string(py::str(py::type::of(x).attr("__name__"))));
+  const auto array = py::array::ensure(x);
+  if (!array) throw refuse(std::string(py::str(py::type::of(x).attr("__name__"))));
+  const char kind = array.dtype().kind();
+  if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b') {
+    throw refuse("an array of dtype " + std::string(py::str(array.dtype())));
   }
-  throw py::value_error(std::string(function) + ": " + name + " must be a number or an array of numbers, not " +
-                        std::string(py::str(py::type::of(x).attr("__name__"))));
+  auto points = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+  if (!points) throw refuse(std::string(py::str(py::type::of(x).attr("__name__"))));
+  return points;
+}
+
+// A Python int or float as a double: an int beyond the doubles is a ValueError (not an
+// OverflowError from deep inside the conversion).
+inline double as_double(const py::handle& x, const char* function, const char* name) {
+  if (py::isinstance<py::int_>(x)) {
+    const double value = PyLong_AsDouble(x.ptr());
+    if (value == -1.0 && PyErr_Occurred()) {
+      PyErr_Clear();
+      throw py::value_error(std::string(function) + ": " + name + " = " + std::string(py::str(py::repr(x))).substr(0, 40) +
+                            "... is beyond the range of a double");
+    }
+    return value;
+  }
+  return x.cast<double>();
+}
+
+// Enum(value) for a value of one of its `count` members 0 .. count - 1, else ValueError
+// (pybind11's own constructor takes any int).
+template <class Enum, int count>
+Enum checked_enum(int value) {
+  if (value < 0 || value >= count) {
+    throw py::value_error("wavecontact: " + std::to_string(value) + " is not a value of this enum (0 to " +
+                          std::to_string(count - 1) + ")");
+  }
+  return static_cast<Enum>(value);
 }
 
 // An evaluator of one point applied to a number (a float back), or to an array of any shape
@@ -35,7 +70,9 @@ inline py::array_t<double, py::array::c_style> as_points(const py::handle& x, co
 template <class Scalar, class Kernel>
 py::object scalar_or_array(const py::handle& x, const char* function, const char* name, Scalar scalar,
                            Kernel kernel) {
-  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) return py::float_(scalar(x.cast<double>()));
+  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) {
+    return py::float_(scalar(as_double(x, function, name)));
+  }
   const auto points = as_points(x, function, name);
   if (points.ndim() == 0 && !py::isinstance<py::array>(x)) return py::float_(scalar(*points.data()));  // numpy.int64(3)
   py::array_t<double> result(std::vector<py::ssize_t>(points.shape(), points.shape() + points.ndim()));

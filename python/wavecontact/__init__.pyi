@@ -10,6 +10,9 @@ __version__: str
 
 _Points = npt.ArrayLike
 
+class BeyondReach(RuntimeError):
+    """A computation that cannot meet its contract: the work budget spent, a contact beyond reach."""
+
 class Form:
     exact: Form
     paper: Form
@@ -236,9 +239,9 @@ class Contact:
     def gap(self, x: _Points) -> np.ndarray: ...
 
 @overload
-def solve_contact(surface: Surface, P: float, tolerance: float = ..., order: int = ...) -> Contact: ...
+def solve_contact(surface: Surface, P: float, tolerance: float = ..., order: int = ..., max_seconds: float = ...) -> Contact: ...
 @overload
-def solve_contact(surface: Surface, P: _Points, tolerance: float = ..., order: int = ...) -> list[Contact]: ...
+def solve_contact(surface: Surface, P: _Points, tolerance: float = ..., order: int = ..., max_seconds: float = ...) -> list[Contact]: ...
 def full_contact_load(surface: Surface) -> float: ...
 
 class SingleZoneCheck:

@@ -1,7 +1,8 @@
 // The wavecontact command line: argument parsing and the subcommands, as a function that
 // main() and the fuzz target share.
-// Output is CSV on `out`; a bad argument prints one line on `err`, returns 2 and writes
-// nothing on `out` (output is assembled before it is printed).
+// Output is CSV on `out`; a failure prints one line on `err`, returns its exit status
+// (common/exit_status.hpp) and writes nothing on `out` (output is assembled before it is
+// printed).
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -16,6 +17,8 @@
 
 #include "app.hpp"
 #include "contact_commands.hpp"
+#include "decimal_option.hpp"
+#include "exit_status.hpp"
 #include "errors.hpp"
 #include "reproduce.hpp"
 #include "user_profile_commands.hpp"
@@ -192,13 +195,18 @@ struct ZoneOptions {
   std::optional<double> a;
   std::vector<double> P, ratio;
   double tolerance = 1e-10;
+  double max_seconds = 60;
 
   void add_to(CLI::App* app, bool with_a, bool several_loads) {
     if (with_a) app->add_option("--a", a, "contact half-width a of one zone, 0 < a < b1 [length]");
     const std::string list = several_loads ? " (a comma list for several)" : "";
     app->add_option("--P", P, "load per unit length P [pressure x length]" + list)->delimiter(',');
     app->add_option("--pa-over-pstar", ratio, "dimensionless mean pressure pa/p*" + list)->delimiter(',');
-    app->add_option("--tolerance", tolerance, "relative error the contact must meet, 1e-14 to 1e-2")
+    app->add_option("--tolerance", tolerance,
+                    "relative error the contact must meet, 1e-14 to 1e-2 (missed: exit 4)")
+        ->capture_default_str();
+    app->add_option("--max-seconds", max_seconds,
+                    "work budget of the solve, 0 < s <= 1e6: beyond it, exit 4 saying how far it got")
         ->capture_default_str();
   }
 
@@ -224,7 +232,7 @@ struct ZoneOptions {
     return l.front();
   }
 
-  wavecontact::SolverOptions solver() const { return {tolerance, 0}; }
+  wavecontact::SolverOptions solver() const { return {tolerance, 0, max_seconds}; }
 };
 
 std::string pressure_table(const TwoScaleParams& p, double a, const std::vector<double>& xs,
@@ -271,6 +279,26 @@ std::string curve_table(const TwoScaleParams& p, int points) {
 }  // namespace
 
 namespace wavecontact::cli {
+
+namespace {
+
+// A library message without its "wavecontact::function: " prefix (the command line names
+// itself), shortened to about 200 characters of any echoed input.
+std::string without_prefix(const std::string& message) {
+  std::string text = message;
+  if (text.rfind("wavecontact::", 0) == 0 || text.rfind("wavecontact: ", 0) == 0) {
+    const std::size_t colon = text.find(": ");
+    if (colon != std::string::npos) text = text.substr(colon + 2);
+  }
+  return text;
+}
+
+int fail(std::ostream& err, int status, const std::string& message) {
+  err << "wavecontact: " << cli_common::shortened(without_prefix(message), 600) << "\n";
+  return status;
+}
+
+}  // namespace
 
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
         bool allow_files) {
@@ -325,6 +353,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
 
   auto* reproduce = app.add_subcommand("reproduce", "CSV and PNG of the seed paper's figures");
   reproduce->add_option("--out", out_dir, "output directory")->required();
+  std::vector<std::string> only;
+  reproduce->add_option("--figures", only,
+                        "only these figures (comma list, e.g. fig1,fig10); without it, all of them and REPORT.md")
+      ->delimiter(',');
 
   auto* optimize = app.add_subcommand(
       "optimize-shape",
@@ -337,8 +369,21 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
   int kcoef_n = 0;
   kcoef->add_option("--n", kcoef_n, "wavelength ratio n, even >= 2")->required();
 
+  cli_common::require_decimal_numbers(app);
   try {
-    app.parse(argc, argv);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::RequiredError&) {
+      // CLI11 reads an unknown first word as a missing subcommand.
+      if (argc > 1 && argv[1][0] != '-') {
+        std::string names;
+        for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+          names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        throw UsageError("unknown subcommand \"" + cli_common::shortened(argv[1]) + "\" (one of: " + names + ")");
+      }
+      throw;
+    }
     std::string output;
     namespace cli = wavecontact::cli;
     if (*pressure && !zone.a) {
@@ -397,29 +442,32 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
       for (std::size_t j = 0; j < k.size(); ++j) output += std::to_string(j + 1) + "," + k[j] + "\n";
     } else if (*reproduce) {
       if (!allow_files) throw UsageError("reproduce is disabled here (it writes files)");
-      cli::reproduce(out_dir, err);
+      cli::reproduce(out_dir, only, err);
     }
     out << output;
-    return 0;
+    out.flush();
+    if (!out) throw OutputError("cannot write the output (standard output)");
+    return exit_status::success;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e, out, err);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e, out, err);
   } catch (const CLI::ParseError& e) {
-    err << "wavecontact: " << e.what() << "\n";
-    return 2;
+    return fail(err, exit_status::bad_argument, e.what());
   } catch (const UsageError& e) {
-    err << "wavecontact: " << e.what() << "\n";
-    return 2;
+    return fail(err, exit_status::bad_argument, e.what());
   } catch (const std::domain_error& e) {
-    err << "wavecontact: " << e.what() << "\n";
-    return 2;
+    return fail(err, exit_status::bad_argument, e.what());
   } catch (const InadmissibleError& e) {
-    err << "wavecontact: " << e.what() << "\n";
-    return 3;
+    return fail(err, exit_status::not_the_contact, e.what());
+  } catch (const wavecontact::BeyondReach& e) {
+    return fail(err, exit_status::beyond_reach, e.what());
+  } catch (const NotWithinTolerance& e) {
+    return fail(err, exit_status::beyond_reach, e.what());
+  } catch (const OutputError& e) {
+    return fail(err, exit_status::io_error, e.what());
   } catch (const std::exception& e) {
-    err << "wavecontact: error: " << e.what() << "\n";
-    return 1;
+    return fail(err, exit_status::internal_error, std::string("internal error (please report it): ") + e.what());
   }
 }
 

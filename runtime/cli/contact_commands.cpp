@@ -1,14 +1,36 @@
 #include "contact_commands.hpp"
 
+#include <cstdio>
 #include <sstream>
 
 #include "errors.hpp"
 
 namespace wavecontact::cli {
 
+namespace {
+
+// The contacts at the loads, each within the tolerance (else NotWithinTolerance, by how much).
+std::vector<Contact> solve_within_tolerance(const Surface& surface, const std::vector<double>& loads,
+                                            const SolverOptions& options) {
+  std::vector<Contact> contacts = solve_contact(surface, loads, options);
+  for (const Contact& c : contacts) {
+    if (!(c.error_estimate() <= options.tolerance)) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "the contact at P = %.17g has an error estimate of %.2g, %.3g times the tolerance %.2g "
+                    "(--tolerance)",
+                    c.load(), c.error_estimate(), c.error_estimate() / options.tolerance, options.tolerance);
+      throw NotWithinTolerance(text);
+    }
+  }
+  return contacts;
+}
+
+}  // namespace
+
 std::string contact_rows(const Surface& surface, const std::vector<double>& loads,
                          std::optional<double> pstar_load, const SolverOptions& options) {
-  const std::vector<Contact> contacts = solve_contact(surface, loads, options);
+  const std::vector<Contact> contacts = solve_within_tolerance(surface, loads, options);
   std::ostringstream os;
   os << "P,pa," << (pstar_load ? "pa_over_pstar," : "")
      << "zones,contact_fraction,full_contact,p0,max_p,x_of_max_p,error_estimate\n";
@@ -23,7 +45,7 @@ std::string contact_rows(const Surface& surface, const std::vector<double>& load
 }
 
 std::string contact_zones(const Surface& surface, double P, const SolverOptions& options) {
-  const Contact c = solve_contact(surface, P, options);
+  const Contact c = solve_within_tolerance(surface, {P}, options).front();
   std::ostringstream os;
   os << "zone,x_start,x_end,load,max_p,x_of_max_p\n";
   int k = 0;
@@ -36,7 +58,7 @@ std::string contact_zones(const Surface& surface, double P, const SolverOptions&
 
 std::string contact_pressure(const Surface& surface, double P, const std::vector<double>& xs,
                              const SolverOptions& options) {
-  const Contact c = solve_contact(surface, P, options);
+  const Contact c = solve_within_tolerance(surface, {P}, options).front();
   std::ostringstream os;
   os << "x,p,gap\n";
   for (double x : xs) os << all_digits(x) << "," << all_digits(c.pressure(x)) << "," << all_digits(c.gap(x)) << "\n";

@@ -1,14 +1,22 @@
 #include "reproduce.hpp"
 
-#include <cstdio>
-#include <cstdlib>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "errors.hpp"
 #include "figure.hpp"
+
+extern char** environ;
 
 namespace wavecontact::cli {
 
@@ -19,32 +27,93 @@ namespace {
 void write(const fs::path& path, const std::string& contents) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << contents;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out.close();
+  if (!out) throw OutputError("cannot write " + path.string() + ": " + std::strerror(errno));
+}
+
+// Runs gnuplot on `script` (a file name in `dir`) with `dir` as its working directory: an
+// argument vector, no shell, so any path works. Throws OutputError if it cannot run or fails.
+void run_gnuplot(const fs::path& dir, const std::string& script) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
+  std::string program = "gnuplot", argument = script;
+  char* argv[] = {program.data(), argument.data(), nullptr};
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) {
+    throw OutputError("cannot run gnuplot: " + std::string(std::strerror(spawned)) +
+                      (spawned == ENOENT ? " (scripts/install-deps.sh installs it)" : ""));
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw OutputError("cannot wait for gnuplot: " + std::string(std::strerror(errno)));
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw OutputError("gnuplot failed on " + (dir / script).string() +
+                      (WIFEXITED(status) ? " (exit status " + std::to_string(WEXITSTATUS(status)) + ")" : " (killed)"));
+  }
+}
+
+// A whole PNG: its signature first and its IEND chunk last (a full disk truncates it).
+void require_png(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string signature = "\x89PNG\r\n\x1a\n";
+  const std::string end("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  if (bytes.size() < signature.size() + end.size() || bytes.compare(0, signature.size(), signature) != 0 ||
+      bytes.compare(bytes.size() - end.size(), end.size(), end) != 0) {
+    throw OutputError(path.string() + " is not a whole PNG after gnuplot (a full disk?)");
+  }
 }
 
 }  // namespace
 
-void reproduce(const std::string& out_dir, std::ostream& log) {
+void reproduce(const std::string& out_dir, const std::vector<std::string>& only, std::ostream& log) {
+  const std::vector<std::string> names{"fig1", "fig2", "fig4",  "fig5a", "fig5b", "fig6",
+                                       "fig7", "fig8", "fig9", "fig10", "fig11"};
+  for (const std::string& name : only) {
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      std::string list;
+      for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw UsageError("--figures: no figure \"" + name + "\" (one of: " + list + ")");
+    }
+  }
+  const auto wanted = [&](const char* name) {
+    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+  };
   const fs::path dir(out_dir);
-  fs::create_directories(dir);
-  const TwoScaleSweeps sweeps = two_scale_sweeps();
-  const std::vector<Figure> figures{wave_curves(),      two_scale_profiles(),    roughness_integrand(),
-                                    single_asperity_pressure(), periodic_pressure(), contact_length(),
-                                    centre_pressure(sweeps),    two_scale_contact_area(), shape_design(),
-                                    contact_fraction_and_zones(sweeps), multi_zone_pressure()};
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir)) {
+    throw OutputError("cannot create --out " + out_dir + (error ? ": " + error.message() : ": not a directory"));
+  }
+  const bool need_sweeps = wanted("fig7") || wanted("fig10");
+  const TwoScaleSweeps sweeps = need_sweeps ? two_scale_sweeps() : TwoScaleSweeps{};
+  std::vector<Figure> figures;
+  if (wanted("fig1")) figures.push_back(wave_curves());
+  if (wanted("fig2")) figures.push_back(two_scale_profiles());
+  if (wanted("fig4")) figures.push_back(roughness_integrand());
+  if (wanted("fig5a")) figures.push_back(single_asperity_pressure());
+  if (wanted("fig5b")) figures.push_back(periodic_pressure());
+  if (wanted("fig6")) figures.push_back(contact_length());
+  if (wanted("fig7")) figures.push_back(centre_pressure(sweeps));
+  if (wanted("fig8")) figures.push_back(two_scale_contact_area());
+  if (wanted("fig9")) figures.push_back(shape_design());
+  if (wanted("fig10")) figures.push_back(contact_fraction_and_zones(sweeps));
+  if (wanted("fig11")) figures.push_back(multi_zone_pressure());
   for (const Figure& figure : figures) {
     write(dir / (figure.name + ".csv"), figure.csv);
     write(dir / (figure.name + ".gp"),
           "set terminal pngcairo size 1100,650 font 'DejaVu Sans,10'\nset output '" +
               figure.name + ".png'\nset datafile separator ','\n"
               "set grid\n" + figure.script);
-    const std::string command = "cd '" + dir.string() + "' && gnuplot '" + figure.name + ".gp'";
-    if (std::system(command.c_str()) != 0) {
-      throw std::runtime_error("gnuplot failed on " + (dir / (figure.name + ".gp")).string() +
-                               " (is gnuplot installed? scripts/install-deps.sh installs it)");
-    }
+    run_gnuplot(dir, figure.name + ".gp");
+    require_png(dir / (figure.name + ".png"));
     log << "wrote " << (dir / (figure.name + ".png")).string() << "\n";
   }
+  if (!only.empty()) return;  // the report reads every figure
   write(dir / "REPORT.md", discrepancy_report(figures, sweeps));
   log << "wrote " << (dir / "REPORT.md").string() << "\n";
 }

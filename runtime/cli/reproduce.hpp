@@ -4,11 +4,14 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace wavecontact::cli {
 
-// Writes DIR/figN.csv, DIR/figN.gp and DIR/figN.png; progress goes to `log`.
-// Throws std::runtime_error if a file cannot be written or gnuplot fails.
-void reproduce(const std::string& out_dir, std::ostream& log);
+// Writes DIR/figN.csv, DIR/figN.gp and DIR/figN.png (of the figures named in `only`, or all
+// of them and DIR/REPORT.md); progress goes to `log`.
+// Throws OutputError (errors.hpp) if a file cannot be written, gnuplot fails or leaves a
+// PNG that is not whole.
+void reproduce(const std::string& out_dir, const std::vector<std::string>& only, std::ostream& log);
 
 }  // namespace wavecontact::cli

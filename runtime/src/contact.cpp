@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include <boost/math/constants/constants.hpp>
@@ -26,26 +27,38 @@ void require_options(const char* function, const SolverOptions& options) {
   if (options.order != 0 && (options.order < 4 || options.order > 64)) {
     detail::domain_error(function, "order", options.order, "0 (adaptive) or 4 <= order <= 64");
   }
+  if (!(options.max_seconds > 0 && options.max_seconds <= 1e6)) {
+    detail::domain_error(function, "max_seconds", options.max_seconds, "0 < max_seconds <= 1e6");
+  }
 }
 
-// The largest pressure on [lo, hi] (x^): the best sample, refined by Brent's method between
-// its neighbouring samples.
+// The largest pressure on [lo, hi] (x^): every sample that is a local maximum, refined by
+// Brent's method between its neighbouring samples (the largest sample need not be next to
+// the largest pressure).
 std::pair<double, double> largest_pressure(const detail::IntervalInversion& inversion, double lo, double hi) {
   std::vector<detail::IntervalInversion::Sample> samples;
   for (const auto& s : inversion.pressure_samples()) {
     if (s.x >= lo && s.x <= hi) samples.push_back(s);
   }
-  std::sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  std::sort(samples.begin(), samples.end(),
+            [](const auto& a, const auto& b) { return a.x < b.x || (a.x == b.x && a.value > b.value); });
+  // Panels share their end points, whose two samples may differ in the last bit: the higher.
+  samples.erase(std::unique(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x == b.x; }),
+                samples.end());
   if (samples.empty()) return {0, lo};
-  std::size_t best = 0;
+  std::pair<double, double> best{-std::numeric_limits<double>::infinity(), lo};
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    if (samples[i].value > samples[best].value) best = i;
+    const bool left = i == 0 || samples[i].value >= samples[i - 1].value;
+    const bool right = i + 1 == samples.size() || samples[i].value >= samples[i + 1].value;
+    if (!left || !right) continue;
+    if (samples[i].value > best.first) best = {samples[i].value, samples[i].x};
+    const double a = i > 0 ? samples[i - 1].x : lo, b = i + 1 < samples.size() ? samples[i + 1].x : hi;
+    if (!(b > a)) continue;
+    const auto [x, minus_p] = boost::math::tools::brent_find_minima(
+        [&](double t) { return -inversion.pressure(t); }, a, b, 52);
+    if (-minus_p > best.first) best = {-minus_p, x};
   }
-  const double a = best > 0 ? samples[best - 1].x : lo;
-  const double b = best + 1 < samples.size() ? samples[best + 1].x : hi;
-  const auto [x, minus_p] = boost::math::tools::brent_find_minima(
-      [&](double t) { return -inversion.pressure(t); }, a, b, 52);
-  return -minus_p > samples[best].value ? std::pair{-minus_p, x} : std::pair{samples[best].value, samples[best].x};
+  return best;
 }
 
 }  // namespace
@@ -74,8 +87,17 @@ std::vector<Contact> solve_contact(const Surface& surface, const std::vector<dou
                                    const SolverOptions& options) {
   constexpr const char* function = "wavecontact::solve_contact";
   require_options(function, options);
-  for (double P : loads) detail::require_positive(function, "P", P);
-  const detail::ContactSolver solver(surface.slope(), options.tolerance, options.order);
+  // Below this load the contact is a single zone of a width beyond the resolution of x.
+  const double lowest = min_load_ratio * surface.E() * surface.height_scale();
+  for (double P : loads) {
+    if (!(std::isfinite(P) && P >= lowest && P <= max_scale * max_scale)) {
+      detail::domain_error(function, "P", P,
+                           detail::format(lowest) + " = " + detail::format(min_load_ratio) +
+                               " E* max|y| <= P <= " + detail::format(max_scale * max_scale));
+    }
+  }
+  const detail::ContactSolver solver(surface.slope(), options.tolerance, options.order,
+                                     detail::WorkBudget(options.max_seconds, options.checkpoint));
   const std::vector<detail::SolvedContact> solved = solver.solve(loads);
   const double b1 = surface.b1(), to_x = b1 / pi, to_p = pi / b1;
   std::vector<Contact> contacts;
@@ -120,9 +142,7 @@ double full_contact_load(const Surface& surface) {
 
 SingleZoneCheck single_zone_check(const Surface& surface, double a) {
   constexpr const char* function = "wavecontact::single_zone_check";
-  if (!(std::isfinite(a) && a > 0 && a < surface.b1())) {
-    detail::domain_error(function, "a", a, "0 < a < b1 = " + detail::format(surface.b1()));
-  }
+  detail::require_half_width(function, a, surface.b1(), surface.b1(), false, "b1 = " + detail::format(surface.b1()));
   const detail::SingleZoneResult r = detail::check_single_zone(surface.slope(), pi * a / surface.b1());
   const double to_x = surface.b1() / pi;
   return {r.solution, r.penetrates, r.lowest_gap, r.x_of_lowest_gap * to_x,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -133,10 +134,13 @@ double full_contact_onset(const SurfaceSlope& surface, int order) {
 template <typename F>
 std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversion::Sample> samples, const F& f,
                                                     double level) {
-  std::sort(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x < b.x; });
+  std::sort(samples.begin(), samples.end(),
+            [](const auto& a, const auto& b) { return a.x < b.x || (a.x == b.x && a.value < b.value); });
+  // Panels share their end points, whose two samples may differ in the last bit: the lower.
+  samples.erase(std::unique(samples.begin(), samples.end(), [](const auto& a, const auto& b) { return a.x == b.x; }),
+                samples.end());
   std::vector<IntervalInversion::Sample> minima;
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    // Panels share their end points: a minimum on one comes twice, so <= on the left.
     const bool below_left = i == 0 || samples[i].value <= samples[i - 1].value;
     const bool below_right = i + 1 == samples.size() || samples[i].value < samples[i + 1].value;
     if (!below_left || !below_right) continue;
@@ -157,12 +161,21 @@ std::vector<IntervalInversion::Sample> local_minima(std::vector<IntervalInversio
 
 }  // namespace
 
-ContactSolver::ContactSolver(SurfaceSlope surface, double tolerance, int order)
-    : surface_(std::move(surface)), tolerance_(tolerance), fixed_order_(order) {
+ContactSolver::ContactSolver(SurfaceSlope surface, double tolerance, int order, WorkBudget budget)
+    : surface_(std::move(surface)), tolerance_(tolerance), budget_(std::move(budget)), fixed_order_(order) {
   const HeightScan scan = scan_height(surface_);
   top_angle_ = scan.top_angle;
   height_range_ = scan.range;
   onset_estimate_ = full_contact_onset(surface_, continuation_order);
+}
+
+void ContactSolver::check_budget() const {
+  budget_.check([&] {
+    char loads[96];
+    std::snprintf(loads, sizeof loads, "the continuation reached P = %.6g of %.6g, ", reached_load_, target_load_);
+    return loads + std::to_string(reached_zones_) +
+           (reached_zones_ == 1 ? " zone" : " zones") + " in half a period";
+  });
 }
 
 double ContactSolver::full_contact_load() const {
@@ -234,6 +247,7 @@ ContactSolver::NewtonResult ContactSolver::newton(std::vector<Zone> zones, doubl
   std::size_t closing = static_cast<std::size_t>(-1);  // the stretch the last step overshot
   if (fresh) J = differences(x, r);
   for (int iteration = 0; iteration < newton_iterations; ++iteration) {
+    check_budget();
     const std::vector<Zone> current = IntervalInversion::with_free_ends(zones, x);
     const std::vector<double> now = stretches(x);
     for (std::size_t i = 0; i < now.size(); ++i) {
@@ -349,9 +363,12 @@ std::optional<ContactSolver::State> ContactSolver::settle(std::vector<Zone> zone
 
 ContactSolver::Check ContactSolver::check(const IntervalInversion& inversion) const {
   if (inversion.rounding() > rounding_limit) {
-    throw std::domain_error(
+    char rounding[32];
+    std::snprintf(rounding, sizeof rounding, "%.2g", inversion.rounding());
+    throw BeyondReach(
         "wavecontact::solve_contact: the contact reaches " + std::to_string(inversion.zones().size()) +
-        " zones in half a period, clustered so that rounding alone reaches " + std::to_string(inversion.rounding()) +
+        (inversion.zones().size() == 1 ? " zone" : " zones") +
+        " in half a period, clustered so that rounding alone reaches " + rounding +
         " of the pressure (the several-interval formula multiplies the distances between all zone ends): "
         "beyond the solver's range; a smaller load or fewer, larger asperities are within it");
   }
@@ -432,7 +449,7 @@ ContactSolver::State ContactSolver::seed(double P) const {
       return {zones, load, {}, std::move(inversion)};
     }
   }
-  throw std::runtime_error("wavecontact::solve_contact: no small contact zone carries the load " + std::to_string(P));
+  throw BeyondReach("wavecontact::solve_contact: no small contact zone carries the load " + std::to_string(P));
 }
 
 std::optional<ContactSolver::State> ContactSolver::advance(const State& from, double P,
@@ -550,7 +567,7 @@ SolvedContact ContactSolver::refine(const State& state) const {
   auto solve_at = [&](int order) {
     const NewtonResult result = newton(zones, state.P, order, residual_tolerance, jacobian);
     if (result.outcome != Outcome::converged) {
-      throw std::runtime_error("wavecontact::solve_contact: Newton's method did not converge at order " +
+      throw BeyondReach("wavecontact::solve_contact: Newton's method did not converge at order " +
                                std::to_string(order) + " for the load " + std::to_string(state.P));
     }
     zones = result.zones;
@@ -627,14 +644,17 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
       state = seed(target);
     }
     double ratio = 1;  // the next load is at most (1 + ratio) times the last
+    target_load_ = target;
     while (state->P < target) {
+      reached_load_ = state->P, reached_zones_ = state->zones.size();
+      check_budget();
       const double next = std::min(target, state->P * (1 + ratio));
       std::optional<State> reached = advance(*state, next, before ? &*before : nullptr);
       if (!reached && before) reached = merge_ahead(*state, *before, target);
       if (!reached) {
         ratio /= 4;
         if (ratio < smallest_step) {
-          throw std::runtime_error("wavecontact::solve_contact: the continuation stalled at P = " +
+          throw BeyondReach("wavecontact::solve_contact: the continuation stalled at P = " +
                                    std::to_string(state->P) + " (" + std::to_string(state->zones.size()) +
                                    " zones in half a period) on the way to " + std::to_string(target) +
                                    ": events too close together for the solver");

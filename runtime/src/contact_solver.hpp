@@ -23,6 +23,7 @@
 #include <Eigen/Core>
 
 #include "interval_inversion.hpp"
+#include "work_budget.hpp"
 
 namespace wavecontact::detail {
 
@@ -38,7 +39,7 @@ class ContactSolver {
  public:
   // tolerance: the relative error estimate the result must meet; order > 0 fixes the
   // quadrature order instead (the estimate is then against order + 2).
-  ContactSolver(SurfaceSlope surface, double tolerance, int order = 0);
+  ContactSolver(SurfaceSlope surface, double tolerance, int order = 0, WorkBudget budget = {1e300, {}});
 
   // The load (normalised) from which the contact is full, at the polishing order (computed
   // on first use).
@@ -90,8 +91,14 @@ class ContactSolver {
   std::optional<State> merge_ahead(const State& from, const State& before, double limit) const;
   SolvedContact refine(const State& state) const;
 
+  // The budget's check, naming how far the solve got.
+  void check_budget() const;
+
   SurfaceSlope surface_;
   double tolerance_;
+  WorkBudget budget_;
+  mutable double reached_load_ = 0, target_load_ = 0;  // of the continuation (normalised)
+  mutable std::size_t reached_zones_ = 0;
   int fixed_order_;
   double height_range_;       // max y - min y: the gap scale
   double top_angle_;          // x^ of the highest point

@@ -49,12 +49,17 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
   validate(w, function);
   int highest = 0;
   for (const Harmonic& h : roughness) {
-    detail::require_finite(function, "H", h.H);
+    if (h.H != 0 && !(std::fabs(h.H) >= min_scale && std::fabs(h.H) <= max_scale)) {
+      detail::domain_error(function, "H", h.H,
+                           "0 or " + detail::format(min_scale) + " <= |H| <= " + detail::format(max_scale));
+    }
     if (h.n < 1 || h.n > max_roughness_n) {
       detail::domain_error(function, "n", h.n, "1 <= n <= " + std::to_string(max_roughness_n));
     }
     highest = std::max(highest, h.n);
   }
+  height_scale_ = w.H1;
+  for (const Harmonic& h : roughness) height_scale_ += std::fabs(h.H);
   auto s = std::make_shared<detail::SurfaceSlope>();
   const double H1 = w.H1, m = w.m;
   // Eq. 2 is odd in s = cos x^ (its |cos| branch): Y(s) = sign(s) Y(|s|), Y'(s) = Y'(|s|);
@@ -95,6 +100,7 @@ Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.
   const std::vector<double> q = profile.parameter_values();
   auto s = std::make_shared<detail::SurfaceSlope>();
   s->height = [e, q](double c) { return e.height(q.data(), c); };
+  for (int i = 0; i <= 1024; ++i) height_scale_ = std::max(height_scale_, std::fabs(s->height(std::cos(pi * i / 1024))));
   s->slope = [e, q](double c) { return e.height_slope(q.data(), c); };
   // The poles tau = tan^2(x^/2) off the period are at s = (1 - tau)/(1 + tau). A profile built
   // with abs() has a kink at its branch point, and each piece the poles of its own branch's

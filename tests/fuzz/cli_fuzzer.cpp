@@ -1,7 +1,9 @@
 // libFuzzer target: the wavecontact command line. The input is split into arguments at
 // newlines; `reproduce` is refused (it writes files). Checks the CLI's contract on every
-// input: a failure writes nothing on stdout, and a bad argument (status 2) or a negative
-// pressure (status 3) prints exactly one line on stderr.
+// input (common/exit_status.hpp): the status is one of the table's; 1, an internal error, is
+// a bug and a finding; a failure writes nothing on stdout and exactly one line on stderr; no
+// run outlasts the solver's default work budget of 60 s (plus the time to stop).
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -10,6 +12,7 @@
 #include <vector>
 
 #include "app.hpp"
+#include "exit_status.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 4096) return 0;
@@ -29,13 +32,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<const char*> argv;
   for (const auto& a : arguments) argv.push_back(a.c_str());
 
+  namespace status_of = wavecontact::exit_status;
   std::ostringstream out, err;
+  const auto start = std::chrono::steady_clock::now();
   const int status =
       wavecontact::cli::run(static_cast<int>(argv.size()), argv.data(), out, err, false);
-  if (status != 0 && !out.str().empty()) std::abort();
-  if (status == 2 || status == 3) {
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (seconds > 75) std::abort();  // beyond the default budget of 60 s
+  if (status == status_of::internal_error) std::abort();
+  if (status != status_of::success && status != status_of::bad_argument && status != status_of::not_the_contact &&
+      status != status_of::beyond_reach && status != status_of::io_error) {
+    std::abort();
+  }
+  if (status != status_of::success) {
     const std::string message = err.str();
-    if (message.empty() || message.back() != '\n' ||
+    if (!out.str().empty() || message.empty() || message.back() != '\n' ||
         message.find('\n') != message.size() - 1) {
       std::abort();
     }

@@ -11,11 +11,13 @@
 // to 1e-10); where it is not, those closed forms are refused (admissibility in stability.hpp).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "wavecontact/errors.hpp"
 #include "wavecontact/parameters.hpp"
 #include "wavecontact/profile.hpp"
 
@@ -49,13 +51,15 @@ class Surface {
   double E() const { return E_; }
   // y(x) [length], any x.
   double height(double x) const;
+  // A bound of max |y| [length]: H1 plus the harmonics' |H| (or max |y| sampled, for a profile).
+  double height_scale() const { return height_scale_; }
 
   // The solver's view of the surface (runtime/src/interval_inversion.hpp).
   const detail::SurfaceSlope& slope() const { return *slope_; }
 
  private:
   std::shared_ptr<const detail::SurfaceSlope> slope_;
-  double b1_, E_;
+  double b1_, E_, height_scale_ = 0;
 };
 
 // One contact zone of the period [-b1, b1). A zone around the valley x = +-b1 is listed
@@ -67,7 +71,15 @@ struct ContactZone {
   double x_of_max_pressure;  // [length]
 };
 
+// The smallest load solve_contact takes, relative to E* height_scale(): below it the contact
+// is one zone narrower than the resolution of x.
+inline constexpr double min_load_ratio = 1e-20;
+
 struct SolverOptions {
+  SolverOptions() = default;
+  SolverOptions(double tolerance_, int order_ = 0, double max_seconds_ = 60)
+      : tolerance(tolerance_), order(order_), max_seconds(max_seconds_) {}
+
   // The relative error estimate the result must meet (of the pressure, relative to its
   // maximum, and of the zone ends, relative to the period); 1e-14 <= tolerance <= 1e-2.
   double tolerance = 1e-10;
@@ -75,6 +87,12 @@ struct SolverOptions {
   // estimate (against the previous order) meets the tolerance; 4 <= order <= 64 fixes it
   // (the estimate is then against order + 2).
   int order = 0;
+  // The work budget: a solve that has not met the tolerance after this many seconds stops
+  // with wavecontact::BeyondReach (errors.hpp), saying how far it got; 0 < max_seconds.
+  double max_seconds = 60;
+  // Called at safe points, about every tenth of a second; may throw to abandon the solve
+  // (the exception propagates out of solve_contact).
+  std::function<void()> checkpoint;
 };
 
 // The contact at one load.
