@@ -141,6 +141,8 @@ BranchSplit split_branches(const ex& y) {
   }
   split.top = y.subs(top, GiNaC::subs_options::no_pattern);
   split.flank = y.subs(flank, GiNaC::subs_options::no_pattern);
+  // Signs that cancel (abs(cos x) abs(2 cos x) = 2 cos^2 x) leave one branch: no kink.
+  if (split.branched && (split.top - split.flank).normal().is_zero()) split.branched = false;
   if (split.branched) {
     split.cosine = change;
     split.beta = GiNaC::sqrt((1 - change) / (1 + change));
