@@ -52,7 +52,9 @@ void bind_contact(py::module_& m) {
       .def_property_readonly("x_of_max_pressure", &Contact::x_of_max_pressure)
       .def_property_readonly("error_estimate", &Contact::error_estimate,
                              "relative error of the pressure (to its maximum) and of the ends (to the period)")
-      .def_property_readonly("quadrature_order", &Contact::quadrature_order)
+      .def_property_readonly("rounding_error", &Contact::rounding_error,
+                             "the part of error_estimate that rounding alone makes")
+      .def_property_readonly("nodes_per_zone", &Contact::nodes_per_zone, "the most Chebyshev nodes of a zone")
       .def(
           "pressure",
           [](const Contact& c, const py::handle& x) {
@@ -72,10 +74,10 @@ void bind_contact(py::module_& m) {
 
   m.def(
       "solve_contact",
-      [](const Surface& surface, const py::handle& P, double tolerance, int order, double max_seconds) -> py::object {
+      [](const Surface& surface, const py::handle& P, double tolerance, int nodes_per_zone, double max_seconds) -> py::object {
         // Ctrl-C reaches the solve at its next safe point (about every tenth of a second):
         // the checkpoint takes the GIL, and a pending KeyboardInterrupt abandons the solve.
-        SolverOptions options{tolerance, order, max_seconds};
+        SolverOptions options{tolerance, nodes_per_zone, max_seconds};
         options.checkpoint = [] {
           py::gil_scoped_acquire acquire;
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
@@ -99,10 +101,10 @@ void bind_contact(py::module_& m) {
         }
         return py::cast(contacts);
       },
-      "surface"_a, "P"_a, "tolerance"_a = 1e-10, "order"_a = 0, "max_seconds"_a = 60.0,
+      "surface"_a, "P"_a, "tolerance"_a = 1e-10, "nodes_per_zone"_a = 0, "max_seconds"_a = 60.0,
       "The contact carrying the load P > 0 per period: a Contact for a float, a list of them for "
       "a sequence or array of loads (one continuation through them). tolerance: the relative error "
-      "estimate to meet; order > 0 fixes the quadrature order; max_seconds: the work budget, "
+      "estimate to meet; nodes_per_zone > 0 fixes the Chebyshev nodes of every zone; max_seconds: the work budget, "
       "beyond which BeyondReach is raised. Ctrl-C interrupts it within a second.");
   m.def("full_contact_load", &full_contact_load, "surface"_a, "The load from which the contact is full.");
 

@@ -34,7 +34,7 @@ SURFACE = wc.Surface(wc.WavinessParams(H1=1, b1=10, m=0, E=1), [wc.Harmonic(H=0.
     (lambda: wc.solve_contact(SURFACE, -1.0), "P = -1"),
     (lambda: wc.solve_contact(SURFACE, [0.3, math.nan]), "P = nan"),
     (lambda: wc.solve_contact(SURFACE, 0.3, tolerance=0.5), "tolerance"),
-    (lambda: wc.solve_contact(SURFACE, 0.3, order=2), "order"),
+    (lambda: wc.solve_contact(SURFACE, 0.3, nodes_per_zone=2), "nodes_per_zone"),
     (lambda: wc.solve_contact(SURFACE, "heavy"), "P must be a number or an array of numbers"),
     (lambda: wc.single_zone_check(SURFACE, 20.0), "a = 20"),
     (lambda: wc.Surface(W, [wc.Harmonic(H=0.1, n=0)]), "n = 0"),

@@ -11,6 +11,7 @@
 // to 1e-10); where it is not, those closed forms are refused (admissibility in stability.hpp).
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -24,13 +25,15 @@
 namespace wavecontact {
 
 namespace detail {
-struct SurfaceSlope;
-class IntervalInversion;
+struct SurfaceModel;
+class ContactSolution;
 }  // namespace detail
 
 struct TwoScaleParams;
 
 // A roughness harmonic H cos(n pi x/b1): H finite (negative: a trough at x = 0), n >= 1.
+// A surface takes at most max_harmonics of them, each n <= max_roughness_n (two_scale.hpp).
+inline constexpr std::size_t max_harmonics = 16;
 struct Harmonic {
   double H;  // [length]
   int n;
@@ -54,11 +57,11 @@ class Surface {
   // A bound of max |y| [length]: H1 plus the harmonics' |H| (or max |y| sampled, for a profile).
   double height_scale() const { return height_scale_; }
 
-  // The solver's view of the surface (runtime/src/interval_inversion.hpp).
-  const detail::SurfaceSlope& slope() const { return *slope_; }
+  // The solver's view of the surface (runtime/src/contact/surface_model.hpp).
+  const std::shared_ptr<const detail::SurfaceModel>& model() const { return model_; }
 
  private:
-  std::shared_ptr<const detail::SurfaceSlope> slope_;
+  std::shared_ptr<const detail::SurfaceModel> model_;
   double b1_, E_, height_scale_ = 0;
 };
 
@@ -77,16 +80,16 @@ inline constexpr double min_load_ratio = 1e-20;
 
 struct SolverOptions {
   SolverOptions() = default;
-  SolverOptions(double tolerance_, int order_ = 0, double max_seconds_ = 60)
-      : tolerance(tolerance_), order(order_), max_seconds(max_seconds_) {}
+  SolverOptions(double tolerance_, int nodes_per_zone_ = 0, double max_seconds_ = 60)
+      : tolerance(tolerance_), nodes_per_zone(nodes_per_zone_), max_seconds(max_seconds_) {}
 
   // The relative error estimate the result must meet (of the pressure, relative to its
   // maximum, and of the zone ends, relative to the period); 1e-14 <= tolerance <= 1e-2.
   double tolerance = 1e-10;
-  // Gauss-Legendre points per quadrature panel: 0 raises it from 16 by 4 until the error
-  // estimate (against the previous order) meets the tolerance; 4 <= order <= 64 fixes it
-  // (the estimate is then against order + 2).
-  int order = 0;
+  // The Chebyshev nodes of each zone's density: 0 lets each zone's grow until its tail meets
+  // the tolerance (the estimate is against a solve on a quarter more); 4 <= nodes_per_zone
+  // <= 4096 fixes them.
+  int nodes_per_zone = 0;
   // The work budget: a solve that has not met the tolerance after this many seconds stops
   // with wavecontact::BeyondReach (errors.hpp), saying how far it got; 0 < max_seconds.
   double max_seconds = 60;
@@ -114,18 +117,21 @@ class Contact {
   double gap(double x) const;
 
   // The estimated relative error of the pressure (to max_pressure()) and of the zone ends
-  // (to the period 2 b1): the larger of the change from the previous quadrature order and
-  // the rounding error.
+  // (to the period 2 b1): the larger of the change to a solve on more nodes and the
+  // rounding error.
   double error_estimate() const { return error_estimate_; }
-  // The Gauss-Legendre order per panel of the quadrature.
-  int quadrature_order() const { return order_; }
+  // The part of it that rounding alone makes (each zone's load is the T_0 coefficient of a
+  // sum of the other zones' potentials and the approach).
+  double rounding_error() const { return rounding_; }
+  // The most Chebyshev nodes of a zone.
+  int nodes_per_zone() const { return nodes_; }
 
  private:
   friend std::vector<Contact> solve_contact(const Surface&, const std::vector<double>&, const SolverOptions&);
-  std::shared_ptr<const detail::IntervalInversion> inversion_;
+  std::shared_ptr<const detail::ContactSolution> solution_;
   double b1_ = 0, P_ = 0, fraction_ = 0, max_pressure_ = 0, x_of_max_ = 0;
-  double error_estimate_ = 0;
-  int order_ = 0;
+  double error_estimate_ = 0, rounding_ = 0;
+  int nodes_ = 0;
   bool full_ = false;
   std::vector<ContactZone> zones_;
 };

@@ -1,0 +1,134 @@
+#include "kink_correction.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <mutex>
+
+#include <boost/math/quadrature/tanh_sinh.hpp>
+
+#include "chebyshev.hpp"
+#include "constants.hpp"
+
+namespace wavecontact::detail {
+
+namespace {
+
+// W(u) = (1 - v)^K sum_{i<L} C(K + i - 1, i) v^i, v = u^2: 1 - O(u^(2 L)) at 0 (the truncated
+// series of (1 - v)^-K), zero to order K at |u| = 1, a polynomial of degree 2 (K + L - 1)
+// falling monotonically (a regularised incomplete beta function).
+constexpr int window_order = 8, window_flatness = 5;
+constexpr double least_inside = 1e-2;  // of the zone's extent in s: nearer an end, no correction
+constexpr int most_piece_nodes = 257;
+
+double window(double u) {
+  if (!(std::fabs(u) < 1)) return 0;
+  const double v = u * u, w = 1 - v, w2 = w * w, w4 = w2 * w2;
+  static_assert(window_order == 8, "(1 - v)^8 by squaring");
+  double term = 1, sum = 1;
+  for (int i = 1; i < window_flatness; ++i) {
+    term *= v * (window_order + i - 1) / i;
+    sum += term;
+  }
+  return w4 * w4 * sum;
+}
+
+// Int_a^b f, f with integrable (logarithmic) singularities at a and b.
+template <class F>
+double integral(const F& f, double a, double b) {
+  thread_local boost::math::quadrature::tanh_sinh<double> rule(12);  // integrate() is not const
+  return b > a ? rule.integrate(f, a, b, 1e-15) : 0.0;
+}
+
+}  // namespace
+
+// The windows of one kink, by radius.
+struct KinkWindows {
+  std::mutex mutex;
+  std::map<double, std::shared_ptr<const KinkCorrection>> windows;
+};
+
+std::shared_ptr<KinkWindows> make_kink_windows() { return std::make_shared<KinkWindows>(); }
+
+KinkCorrection::KinkCorrection(const Kink& kink, double r) : kink_(kink), r_(r) {
+  const double s0 = kink.s;
+  load_ = integral([&](double t) { return density(t); }, s0 - r, s0) +
+          integral([&](double t) { return density(t); }, s0, s0 + r);
+  // The potential on each piece between -1, s0 - r, s0, s0 + r and 1: interpolants at the
+  // extrema cos(pi i / n) of T_n, n doubling (each doubling reuses the values it has) until
+  // the last coefficients are below 1e-15 of the largest value.
+  std::vector<double> cuts{-1.0, std::max(-1.0, s0 - r), s0, std::min(1.0, s0 + r), 1.0};
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const double lo = cuts[i], hi = cuts[i + 1];
+    if (!(hi > lo)) continue;
+    Piece piece{lo, hi, {}};
+    std::vector<double> values;  // at cos(pi i / n), i = 0 .. n
+    for (int n = 16;; n *= 2) {
+      std::vector<double> next(static_cast<std::size_t>(n) + 1);
+      for (int k = 0; k <= n; ++k) {
+        if (!values.empty() && k % 2 == 0) {
+          next[static_cast<std::size_t>(k)] = values[static_cast<std::size_t>(k / 2)];
+        } else {
+          next[static_cast<std::size_t>(k)] = direct_potential((lo + hi) / 2 + (hi - lo) / 2 * std::cos(pi * k / n));
+        }
+      }
+      values = std::move(next);
+      piece.coefficients = chebyshev::extrema_coefficients(values);
+      double largest = 0;
+      for (double v : values) largest = std::max(largest, std::fabs(v));
+      const std::size_t m = piece.coefficients.size();
+      const double tail = std::fabs(piece.coefficients[m - 1]) + std::fabs(piece.coefficients[m - 2]);
+      if (tail <= 1e-15 * std::max(largest, 1e-300) || n + 1 >= most_piece_nodes) break;
+    }
+    pieces_.push_back(std::move(piece));
+  }
+}
+
+std::shared_ptr<const KinkCorrection> KinkCorrection::of(const SurfaceModel& surface, const ZoneGeometry& zone) {
+  for (const Kink& kink : surface.kinks) {
+    if (!(kink.angle > zone.a && kink.angle < zone.b)) continue;
+    const double upper = std::cos(zone.a), lower = std::cos(zone.b);  // s of the ends
+    const double room = std::min(upper - kink.s, kink.s - lower);
+    if (room < least_inside * (upper - lower)) return nullptr;
+    // The largest radius of the grid 0.9 radius 2^-k within 0.9 of the room: windows are
+    // few and each computed once, so the residual is cheap and smooth between grid points.
+    double r = 0.9 * kink.radius;
+    while (r > 0.9 * room) r *= 0.5;
+    const std::lock_guard<std::mutex> lock(kink.windows->mutex);
+    std::shared_ptr<const KinkCorrection>& window = kink.windows->windows[r];
+    if (!window) window = std::make_shared<const KinkCorrection>(kink, r);
+    return window;
+  }
+  return nullptr;
+}
+
+double KinkCorrection::density(double t) const {
+  const double u = (t - kink_.s) / r_;
+  if (!(std::fabs(u) < 1) || t == kink_.s) return 0;
+  return -kink_.slope_jump(t) * std::log(std::fabs(t - kink_.s)) * window(u) / pi;
+}
+
+double KinkCorrection::direct_potential(double s) const {
+  const double lo = kink_.s - r_, hi = kink_.s + r_;
+  const auto f = [&](double t) { return t == s ? 0.0 : density(t) * std::log(std::fabs(s - t)); };
+  std::vector<double> cuts{lo, kink_.s, hi};
+  if (s > lo && s < hi && s != kink_.s) cuts.push_back(s);
+  std::sort(cuts.begin(), cuts.end());
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) sum += integral(f, cuts[i], cuts[i + 1]);
+  return -sum / pi;
+}
+
+double KinkCorrection::potential(double x) const {
+  const double s = std::cos(x);
+  for (const Piece& p : pieces_) {
+    if (s >= p.lo && s <= p.hi) {
+      const double t = std::clamp((2 * s - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
+      return chebyshev::sum_t(p.coefficients.data(), p.coefficients.size(), t);
+    }
+  }
+  return direct_potential(s);
+}
+
+}  // namespace wavecontact::detail

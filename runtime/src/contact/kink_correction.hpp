@@ -1,0 +1,55 @@
+// The part of a zone's density that a kink of the surface inside it makes (docs/contact.md).
+//
+// Across a kink at s0 the right-hand side (E/2) y + C - (the other zones) is C^1 only: it is
+// A(s) + B(s) H(s0 - s), A and B analytic, B = (E/2)(Y_beyond - Y_before) = O((s - s0)^2).
+// The density then holds -(1/pi) B'(s) log|s - s0| (the Hilbert transform of the jump), which
+// no Chebyshev series converges to. It is taken out in closed form, windowed:
+//   q_k(t) = -(1/pi) B'(t) log|t - s0| W((t - s0)/r),  |t - s0| < r,
+// W a polynomial of degree 24, 1 - O(u^10) at 0 and zero to order 8 at |u| = 1 (gentle: a
+// steep window would need as many nodes as the singularity it removes), r within the zone and
+// within the branches' analyticity. Its potential is smooth on either side of s0 and of the
+// window's edges: it is computed once per window (tanh-sinh quadrature) at the Chebyshev nodes
+// of the pieces of [-1, 1] between them, and interpolated. A kink closer to an end than a
+// hundredth of the zone is left alone: the other branch holds on a sliver there (a window
+// that narrow would need thousands of nodes), and the error estimate sees it.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "surface_model.hpp"
+#include "zone.hpp"
+
+namespace wavecontact::detail {
+
+class KinkCorrection {
+ public:
+  // The correction of a zone the kink lies well inside (nullptr otherwise): windows on a
+  // geometric grid of radii, each computed once and kept by the kink.
+  static std::shared_ptr<const KinkCorrection> of(const SurfaceModel& surface, const ZoneGeometry& zone);
+
+  // q_k at s = cos x^ (0 outside the window).
+  double density(double s) const;
+  // -(1/pi) Int q_k(t) log|s - t| dt at s = cos x (any x^ in [0, pi]).
+  double potential(double x) const;
+  // The potential by quadrature, without the interpolation (for tests).
+  double potential_by_quadrature(double x) const { return direct_potential(std::cos(x)); }
+  // Int q_k dt: its part of the zone's load.
+  double load() const { return load_; }
+
+  KinkCorrection(const Kink& kink, double r);
+
+ private:
+  struct Piece {
+    double lo, hi;
+    std::vector<double> coefficients;  // of the potential in t = (2 s - lo - hi)/(hi - lo)
+  };
+  double direct_potential(double s) const;
+  Kink kink_;
+  double r_;
+  std::vector<Piece> pieces_;
+  double load_ = 0;
+};
+
+}  // namespace wavecontact::detail

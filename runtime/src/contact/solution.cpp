@@ -1,0 +1,61 @@
+#include "solution.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "constants.hpp"
+#include "zone_field.hpp"
+
+namespace wavecontact::detail {
+
+ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration)
+    : surface_(std::move(surface)), configuration_(std::move(configuration)),
+      fields_(zone_fields(*surface_, configuration_)) {
+  for (const ZoneUnknowns& z : configuration_.zones) ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
+}
+
+bool ContactSolution::full_contact() const {
+  return zone_count() == 1 && zone(0).top() && zone(0).valley();
+}
+
+std::size_t ContactSolution::zone_at(double x) const {
+  // The first end above x: inside a zone when it is the zone's b (odd position).
+  const auto it = std::lower_bound(ends_.begin(), ends_.end(), x);
+  if (it == ends_.end()) return zone_count();
+  const std::size_t i = static_cast<std::size_t>(it - ends_.begin());
+  if (i % 2 == 1 || *it == x) return i / 2;
+  return zone_count();
+}
+
+double ContactSolution::pressure(double x) const {
+  x = std::fabs(x);
+  const std::size_t k = zone_at(x);
+  if (k == zone_count()) return 0;
+  const ZoneUnknowns& z = configuration_.zones[k];
+  if (x == z.geometry.a && !z.geometry.top()) return 0;
+  if (x == z.geometry.b && !z.geometry.valley()) return 0;
+  const double p = zone_pressure(z.geometry, z.d.data(), static_cast<int>(z.d.size()), x);
+  return fields_.kinks[k] ? p + std::sin(x) * fields_.kinks[k]->density(std::cos(x)) : p;
+}
+
+double ContactSolution::potential(double x) const {
+  double sum = 0;
+  for (std::size_t k = 0; k < zone_count(); ++k) sum += zone_potential(configuration_, fields_, k, x);
+  return sum;
+}
+
+double ContactSolution::gap(double x) const {
+  x = std::fabs(x);
+  if (zone_at(x) != zone_count()) return 0;
+  return 2 / surface_->E * (potential(x) - configuration_.C) - surface_->depth(x);
+}
+
+double ContactSolution::zone_load(std::size_t k) const { return detail::zone_load(configuration_, fields_, k); }
+
+double ContactSolution::load() const {
+  double sum = 0;
+  for (std::size_t k = 0; k < zone_count(); ++k) sum += 2 * zone_load(k);
+  return sum;
+}
+
+}  // namespace wavecontact::detail

@@ -1,0 +1,43 @@
+// A solved contact (or an iterate of the solver): the zones with their densities and the
+// constant C, with the pressure and the gap anywhere in the half period (normalised x^, p^).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "surface_model.hpp"
+#include "zone_system.hpp"
+
+namespace wavecontact::detail {
+
+class ContactSolution {
+ public:
+  ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration);
+
+  const Configuration& configuration() const { return configuration_; }
+  const SurfaceModel& surface() const { return *surface_; }
+  std::size_t zone_count() const { return configuration_.zones.size(); }
+  const ZoneGeometry& zone(std::size_t k) const { return configuration_.zones[k].geometry; }
+  bool full_contact() const;
+
+  // The zone holding x^ in [0, pi] (its ends included), or zone_count().
+  std::size_t zone_at(double x) const;
+  // p^ at x^ (any sign: |x^| <= pi), 0 off the zones.
+  double pressure(double x) const;
+  // The gap (2/E*)(Psi(x^) - C) - (y(x^) - y_top) off the zones, 0 on them.
+  double gap(double x) const;
+  // The load of zone k over its part of [0, pi]: pi h d_0 (the mirror image carries as much).
+  double zone_load(std::size_t k) const;
+  double load() const;  // P = 2 sum of zone_load
+
+  // The total potential of the zones at x^ (off them).
+  double potential(double x) const;
+
+ private:
+  std::shared_ptr<const SurfaceModel> surface_;
+  Configuration configuration_;
+  ZoneFields fields_;
+  std::vector<double> ends_;  // a_0, b_0, a_1, ...: for zone_at
+};
+
+}  // namespace wavecontact::detail

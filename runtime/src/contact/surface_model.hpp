@@ -1,0 +1,46 @@
+// The surface as the contact solver sees it: an even profile y(x^) of period 2 pi, given by
+// angle (docs/contact.md), with the points where its slope is not analytic.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace wavecontact::detail {
+
+// The kink corrections computed for one kink, by window (kink_correction.cpp).
+struct KinkWindows;
+std::shared_ptr<KinkWindows> make_kink_windows();
+
+// A point x^0 where the profile changes branch (eq. 2's |cos x^| at x^ = pi/2, a profile built
+// with abs()): y is C^1 there, and the branches continued across it differ by
+// D(s) = Y_beyond(s) - Y_before(s), s = cos x^ (Y_before holds for s > s0, towards the top).
+struct Kink {
+  double angle = 0, s = 0;
+  // (E*/2) D'(s): analytic within `radius` of s0, where the branches' continuations have
+  // their nearest pole.
+  std::function<double(double)> slope_jump;
+  double radius = 0;
+  std::shared_ptr<KinkWindows> windows = make_kink_windows();
+};
+
+struct SurfaceModel {
+  std::function<double(double)> height;  // y(x^), 0 <= x^ <= pi
+  std::function<double(double)> slope;   // dy/dx^
+  // y(x) - y(x0) without the cancellation of the plain difference (defaults to it).
+  std::function<double(double, double)> height_difference;
+  std::vector<Kink> kinks;
+  double resolution = 0;  // half the shortest wavelength, in x^: pi / (highest harmonic)
+  double E = 0;           // reduced modulus E*
+  double scale = 0;       // an upper bound of max |y|
+  // The highest point (x^), the curvature -y'' there and max y - min y: locate_top().
+  double top_angle = 0, top_curvature = 0, height_range = 0;
+  // y(x) - y(top_angle): the heights the solver works with (y near the top keeps its digits).
+  double depth(double x) const { return height_difference(x, top_angle); }
+};
+
+// Fills top_angle, top_curvature and height_range: a scan of 16 points a resolution, the
+// highest refined by Brent's method.
+void locate_top(SurfaceModel& surface);
+
+}  // namespace wavecontact::detail

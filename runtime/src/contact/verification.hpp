@@ -1,0 +1,35 @@
+// Whether a contact is a solution on the whole half period: p >= 0 on every zone and
+// gap >= 0 everywhere off them, the top and the valley included (docs/contact.md). The gap
+// is sampled eight times a shortest wavelength and every local minimum refined by Brent's
+// method; the pressure likewise on each zone.
+#pragma once
+
+#include <vector>
+
+#include "solution.hpp"
+
+namespace wavecontact::detail {
+
+struct Penetration {
+  double x;          // the deepest point (x^)
+  double depth;      // the gap there (< 0)
+  double curvature;  // d^2 gap / dx^2 there
+  double lo, hi;     // the gap region it lies in
+};
+
+struct Verification {
+  double highest_pressure = 0, x_of_highest_pressure = 0;
+  double lowest_pressure = 0, x_of_lowest_pressure = 0;  // over the zones
+  double lowest_gap = 0, x_of_lowest_gap = 0;             // off them
+  std::vector<Penetration> penetrations;                  // gap below -gap_tolerance
+  bool pressure_ok = true;                                // lowest >= -pressure_tolerance * highest
+};
+
+Verification verify(const ContactSolution& solution, double gap_tolerance, double pressure_tolerance);
+
+// The local minima of f over the samples (x sorted), each refined by Brent's method between
+// its neighbours: (x, f(x)) pairs.
+std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
+                                                    const std::function<double(double)>& f);
+
+}  // namespace wavecontact::detail

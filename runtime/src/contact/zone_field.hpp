@@ -1,0 +1,43 @@
+// The density of one zone and its field (docs/contact.md):
+//   q(t) = sum_{j=0}^{N} d_j T_j(tau) / sqrt(1 - tau^2),  tau = (t - m)/h,
+// the unbounded basis, in which the logarithmic potential Psi(s) = -(1/pi) Int q(t) log|s - t| dt
+// is exact in closed form: on the zone h [d_0 log(2/h) + sum_{j>=1} d_j T_j(tau)/j] (the
+// zone's own operator is diagonal), off it, with zeta = z - sgn(z) sqrt(z^2 - 1) (|zeta| < 1),
+//   Psi = h [d_0 (log(2/h) + log|zeta|) + sum_{j>=1} d_j zeta^j / j],
+//   dPsi/ds = -(d_0 + sum_{j>=1} d_j zeta^j) / (sgn(z) sqrt(z^2 - 1)).
+// The zone carries pi h d_0 (of P/2), and q is bounded at an end (the pressure vanishes like a
+// square root there) where sum_j d_j T_j(+-1) = 0.
+#pragma once
+
+#include <vector>
+
+#include "zone.hpp"
+
+namespace wavecontact::detail {
+
+struct FieldValue {
+  double potential = 0, slope = 0;  // Psi and dPsi/ds
+};
+
+// The field at the point of angle x off the zone (not inside it), of the density with
+// coefficients d[0 .. count). The series stops once its terms fall below 1e-17 of the sum.
+FieldValue far_field(const ZoneGeometry& g, const double* d, int count, double x);
+// The potential alone, the same.
+double far_potential(const ZoneGeometry& g, const double* d, int count, double x);
+
+// log(2/h): the potential on the zone of the unit density T_0 / (h sqrt(1 - tau^2)).
+double self_logarithm(const ZoneGeometry& g);
+
+// The coefficients of the zone's own potential: o_0 = h log(2/h) d_0, o_j = h d_j / j.
+void own_potential(const ZoneGeometry& g, const double* d, int count, double* o);
+
+// The conditions on the free ends: sum_j d_j at tau = +1 (x^ = a, unless the top), and
+// sum_j (-1)^j d_j at tau = -1 (x^ = b, unless the valley).
+std::vector<double> end_conditions(const ZoneGeometry& g, const double* d, int count);
+
+// The pressure (normalised: sin x^ q) at angle x in the zone, from coefficients whose end
+// conditions hold: the bounded form (the root factored out at each bounded end), so that it
+// keeps its digits as x nears an end.
+double zone_pressure(const ZoneGeometry& g, const double* d, int count, double x);
+
+}  // namespace wavecontact::detail
