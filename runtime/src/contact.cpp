@@ -7,7 +7,7 @@
 #include <boost/math/tools/minima.hpp>
 
 #include "contact/constants.hpp"
-#include "contact/continuation.hpp"
+#include "contact/contact_solver.hpp"
 #include "contact/solution.hpp"
 #include "parallel.hpp"
 #include "validate.hpp"

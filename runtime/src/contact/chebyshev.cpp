@@ -36,9 +36,9 @@ const Table& table(int M) {
   if (!entry) {
     entry = std::make_unique<Table>();
     entry->nodes.resize(static_cast<std::size_t>(M));
-    entry->cosines.resize(static_cast<std::size_t>(M) * static_cast<std::size_t>(M));
     for (int i = 0; i < M; ++i) entry->nodes[static_cast<std::size_t>(i)] = std::cos(pi * (i + 0.5) / M);
     if (M > tabulated) return *entry;
+    entry->cosines.resize(static_cast<std::size_t>(M) * static_cast<std::size_t>(M));
     for (int j = 0; j < M; ++j) {
       for (int i = 0; i < M; ++i) {
         // j (i + 1/2) reduced modulo 2 M before the cosine keeps its argument small.

@@ -10,7 +10,7 @@ namespace wavecontact::detail {
 
 ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration)
     : surface_(std::move(surface)), configuration_(std::move(configuration)),
-      fields_(zone_fields(*surface_, configuration_)) {
+      fields_(*surface_, configuration_) {
   for (const ZoneUnknowns& z : configuration_.zones) ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
 }
 
@@ -39,9 +39,7 @@ double ContactSolution::pressure(double x) const {
 }
 
 double ContactSolution::potential(double x) const {
-  double sum = 0;
-  for (std::size_t k = 0; k < zone_count(); ++k) sum += zone_potential(configuration_, fields_, k, x);
-  return sum;
+  return fields_.potential(x, zone_count());
 }
 
 double ContactSolution::gap(double x) const {

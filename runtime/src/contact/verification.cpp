@@ -47,9 +47,14 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
     const auto p = [&](double x) { return s.pressure(x); };
     for (const auto& [x, value] : local_minima(xs, ps, p)) {
       if (value < v.lowest_pressure) v.lowest_pressure = value, v.x_of_lowest_pressure = x;
+      if (value < 0) v.tensions.push_back({k, x, value});
     }
   }
-  v.pressure_ok = !(v.lowest_pressure < -pressure_tolerance * v.highest_pressure);
+  const double allowed = -pressure_tolerance * v.highest_pressure;
+  v.tensions.erase(std::remove_if(v.tensions.begin(), v.tensions.end(),
+                                  [&](const Tension& t) { return !(t.pressure < allowed); }),
+                   v.tensions.end());
+  v.pressure_ok = v.tensions.empty();
   // The gap on each stretch between zones (and to the top and the valley).
   std::vector<std::pair<double, double>> regions;
   double previous = 0;

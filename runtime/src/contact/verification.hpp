@@ -17,11 +17,17 @@ struct Penetration {
   double lo, hi;     // the gap region it lies in
 };
 
+struct Tension {
+  std::size_t zone;  // where the pressure has a negative local minimum
+  double x, pressure;
+};
+
 struct Verification {
   double highest_pressure = 0, x_of_highest_pressure = 0;
   double lowest_pressure = 0, x_of_lowest_pressure = 0;  // over the zones
   double lowest_gap = 0, x_of_lowest_gap = 0;             // off them
   std::vector<Penetration> penetrations;                  // gap below -gap_tolerance
+  std::vector<Tension> tensions;                          // p below -pressure_tolerance * highest
   bool pressure_ok = true;                                // lowest >= -pressure_tolerance * highest
 };
 

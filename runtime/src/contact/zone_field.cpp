@@ -56,15 +56,6 @@ void own_potential(const ZoneGeometry& g, const double* d, int count, double* o)
   for (int j = 1; j < count; ++j) o[j] = g.h * d[j] / j;
 }
 
-std::vector<double> end_conditions(const ZoneGeometry& g, const double* d, int count) {
-  std::vector<double> r;
-  double plus = 0, minus = 0;
-  for (int j = 0; j < count; ++j) plus += d[j], minus += (j % 2 == 0 ? d[j] : -d[j]);
-  if (!g.top()) r.push_back(plus);
-  if (!g.valley()) r.push_back(minus);
-  return r;
-}
-
 double zone_pressure(const ZoneGeometry& g, const double* d, int count, double x) {
   const double one_minus = -g.z_minus_1(x), one_plus = g.z_plus_1(x);  // 1 - tau, 1 + tau
   const double tau = (one_plus - one_minus) / 2;

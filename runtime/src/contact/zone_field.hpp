@@ -31,10 +31,6 @@ double self_logarithm(const ZoneGeometry& g);
 // The coefficients of the zone's own potential: o_0 = h log(2/h) d_0, o_j = h d_j / j.
 void own_potential(const ZoneGeometry& g, const double* d, int count, double* o);
 
-// The conditions on the free ends: sum_j d_j at tau = +1 (x^ = a, unless the top), and
-// sum_j (-1)^j d_j at tau = -1 (x^ = b, unless the valley).
-std::vector<double> end_conditions(const ZoneGeometry& g, const double* d, int count);
-
 // The pressure (normalised: sin x^ q) at angle x in the zone, from coefficients whose end
 // conditions hold: the bounded form (the root factored out at each bounded end), so that it
 // keeps its digits as x nears an end.

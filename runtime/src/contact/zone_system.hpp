@@ -13,51 +13,67 @@
 #include <optional>
 #include <vector>
 
+#include "configuration.hpp"
+#include "field_tree.hpp"
 #include "kink_correction.hpp"
 #include "surface_model.hpp"
 #include "zone.hpp"
 
 namespace wavecontact::detail {
 
-struct ZoneUnknowns {
-  ZoneGeometry geometry;
-  std::vector<double> d;  // N + 1 coefficients (the zone's nodes: N + 1)
-  double birth_load = -1;  // where the continuation saw it open (negative: not known)
+// Where each zone's unknowns and rows are in the packed vectors of Newton's method, and their
+// scales. A free end's unknown is its place in s, where the equations are posed (the profile,
+// even in x^, is a smooth function of s = cos x^: a zone through the top or the valley widens
+// linearly with the load in s, like its root in x^), held as 1 - s for an end in the upper
+// half (x^ <= pi/2) and 1 + s in the lower, in units of the zone's half-width h in s. A
+// zone's coefficients are held as h d_j (pi h d_0 is its load: as a zone shrinks, d grows
+// like 1/h, h d stays), the rows as potentials, both in units of the zone's own potential's
+// magnitude h sum |d_j| (row_scale). A zone's block holds its free ends then its
+// coefficients (unknowns), its collocation rows then its end conditions (rows); C and the
+// load row last.
+struct SystemLayout {
+  struct Zone {
+    std::size_t at = 0;  // first unknown (= first row) of the zone's block
+    int free_ends = 0, count = 0;
+    double end_scale = 1, row_scale = 1;
+    bool a_free = false, b_free = false;  // the ends that are unknowns (else fixed at a, b)
+    bool a_upper = false, b_upper = false;  // in the upper half: held as 1 - s (else 1 + s)
+    double a_rate = 0, b_rate = 0;          // d(x^ of the end) / d(its unknown), at the start
+    double a = 0, b = 0;
+    double birth_load = -1;  // carried through (ZoneUnknowns)
+    int block() const { return free_ends + count; }
+  };
+  std::vector<Zone> zones;
+  std::size_t C_at = 0, size = 0;
+  double C_scale = 1;
 };
 
-struct Configuration {
-  std::vector<ZoneUnknowns> zones;  // in increasing x^, disjoint
-  double C = 0;
-};
-
-// What each zone's density is beyond its coefficients d: the kink correction of a zone a
-// kink lies in (null for the others).
+// The field of a configuration's zones: their smooth densities by the tree code, and the
+// kink correction of each zone a kink lies in (null for the others).
 struct ZoneFields {
+  ZoneFields(const SurfaceModel& surface, const Configuration& c);
   std::vector<std::shared_ptr<const KinkCorrection>> kinks;
+  std::vector<std::size_t> kinked;  // the zones that have one
+  FieldTree tree;
+  // The potential at the angles x[0 .. count) of every zone but `skip` (past the last:
+  // none), with its slope d/ds (the kink corrections' slopes left out; slope may be null),
+  // a batch of nearby points as FieldTree::add takes them.
+  void evaluate(std::size_t skip, const std::vector<double>& x, std::vector<double>& potential,
+                std::vector<double>* slope) const;
+  // The same at one point.
+  double potential(double x, std::size_t skip) const;
 };
-ZoneFields zone_fields(const SurfaceModel& surface, const Configuration& c);
-
-// The potential of zone k at x^ off it (its kink correction's included).
-double zone_potential(const Configuration& c, const ZoneFields& fields, std::size_t k, double x);
 
 // The load of zone k over its part of [0, pi]: pi h d_0, plus its kink correction's.
 double zone_load(const Configuration& c, const ZoneFields& fields, std::size_t k);
 
-// What the equations ask of the configuration besides the contact conditions.
-struct Closure {
-  bool load_given = true;  // the zones carry P; else every zone end is fixed (a given single zone)
-  double P = 0;
-};
-
 class ZoneSystem {
  public:
-  ZoneSystem(const SurfaceModel& surface, Closure closure) : surface_(surface), closure_(closure) {}
+  // The zones carry the load P over the period.
+  ZoneSystem(const SurfaceModel& surface, double P) : surface_(surface), P_(P) {}
 
-  // The potential of every zone but `skip` at the angle x (off them all but skip).
-  double field_of_others(const Configuration& c, const ZoneFields& fields, std::size_t skip, double x) const;
-
-  // The coefficients that solve each zone's equations with the others' field and C as they
-  // are (one block-Jacobi sweep): a start for a new zone or new node counts.
+  // The coefficients that solve each zone's equations with the others' field as it is, and
+  // C with which they carry P (one block-Jacobi sweep): a start for new zones or node counts.
   void relax(Configuration& c) const;
 
   // Newton's method from `c` until the scaled residuals are below `tolerance`. Returns the
@@ -73,20 +89,23 @@ class ZoneSystem {
     double residual = 0;  // the largest scaled residual reached
     int iterations = 0;
   };
-  Result newton(Configuration c, double tolerance, const std::function<void()>& checkpoint) const;
+  // ends_fixed: the ends stay where c has them, their conditions dropped (the linear
+  // system of the coefficients and C alone: a consistent start for given zones).
+  Result newton(Configuration c, double tolerance, const std::function<void()>& checkpoint,
+                bool ends_fixed = false) const;
 
   // The scaled residuals of c (for tests and for the solver's checks).
   std::vector<double> residuals(const Configuration& c) const;
 
  private:
-  struct Layout;  // the unknowns' places and scales, fixed for one Newton solve
-  Layout layout(const Configuration& c) const;
-  std::vector<double> pack(const Configuration& c, const Layout& L) const;
-  Configuration unpack(const std::vector<double>& X, const Layout& L) const;
-  std::vector<double> residual(const Configuration& c, const Layout& L, std::vector<std::vector<double>>* external_slope) const;
+  SystemLayout layout(const Configuration& c, bool ends_fixed) const;  // fixed for one Newton solve
+  std::vector<double> pack(const Configuration& c, const SystemLayout& L) const;
+  Configuration unpack(const std::vector<double>& X, const SystemLayout& L) const;
+  std::vector<double> residual(const Configuration& c, const SystemLayout& L,
+                               std::vector<std::vector<double>>* external_slope) const;
 
   const SurfaceModel& surface_;
-  Closure closure_;
+  double P_;
 };
 
 }  // namespace wavecontact::detail

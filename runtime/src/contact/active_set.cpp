@@ -1,0 +1,184 @@
+#include "active_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "constants.hpp"
+#include "solution.hpp"
+#include "verification.hpp"
+#include "zone_system.hpp"
+
+namespace wavecontact::detail {
+
+namespace {
+
+constexpr double working_tail = 1e-9;        // of a zone's coefficients: beyond, more nodes
+constexpr double cut_margin = 0.1;           // of a zone's width, left out around a cut
+constexpr double shortest_piece = 0.02;      // of a zone's width: a shorter piece is dropped
+
+// At least the nodes a zone's width asks for: four a half wavelength of the shortest harmonic
+// on top of the 16 of a cap, so that the density of a zone that spans several asperities is
+// resolved before Newton's method meets it.
+void fit_nodes(Configuration& c, double resolution) {
+  for (ZoneUnknowns& z : c.zones) {
+    const double halves = (z.geometry.b - z.geometry.a) / resolution;
+    const std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
+    if (z.d.size() < needed) z.d.resize(std::min<std::size_t>(most_working_nodes, needed), 0.0);
+  }
+}
+
+// Twice the nodes (at most most_working_nodes) for a zone whose tail exceeds `limit`, or for
+// every zone `where` holds; whether any grew.
+bool grow_nodes(Configuration& c, double limit, const std::function<bool(const ZoneUnknowns&)>& where = {}) {
+  bool grown = false;
+  for (ZoneUnknowns& z : c.zones) {
+    const bool wanted = where ? where(z) : true;
+    if (wanted && coefficient_tail(z.d) > limit && z.d.size() < static_cast<std::size_t>(most_working_nodes)) {
+      z.d.resize(std::min<std::size_t>(most_working_nodes, 2 * z.d.size()), 0.0);
+      grown = true;
+    }
+  }
+  return grown;
+}
+
+ZoneUnknowns zone_of(double a, double b, std::size_t nodes) { return {ZoneGeometry(a, b), std::vector<double>(nodes, 0.0)}; }
+
+void insert_zone(Configuration& c, ZoneUnknowns z) {
+  const auto at = std::lower_bound(c.zones.begin(), c.zones.end(), z.geometry.a,
+                                   [](const ZoneUnknowns& u, double a) { return u.geometry.a < a; });
+  c.zones.insert(at, std::move(z));
+}
+
+// The stretch between ends e and e + 1 of [0, a_0, b_0, ..., pi] closes.
+bool close_stretch(Configuration& c, std::size_t e) {
+  const std::size_t last = 2 * c.zones.size();
+  if (e == 0) {
+    c.zones.front().geometry = ZoneGeometry(0, c.zones.front().geometry.b);
+  } else if (e == last) {
+    c.zones.back().geometry = ZoneGeometry(c.zones.back().geometry.a, pi);
+  } else if (e % 2 == 1) {  // zone (e - 1)/2 vanishes
+    c.zones.erase(c.zones.begin() + static_cast<std::ptrdiff_t>((e - 1) / 2));
+  } else {  // the gap between zones e/2 - 1 and e/2 closes: they merge
+    const std::size_t k = e / 2 - 1;
+    const std::size_t nodes = std::max(c.zones[k].d.size(), c.zones[k + 1].d.size());
+    c.zones[k] = zone_of(c.zones[k].geometry.a, c.zones[k + 1].geometry.b, nodes);
+    c.zones.erase(c.zones.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+  }
+  return !c.zones.empty();
+}
+
+// A new zone at each penetration: about the width of the region where the gap is below 0
+// (the gap near its lowest point is depth + curvature (x - x0)^2 / 2), a quarter of the room
+// around it at most; at the top or the valley it runs through it.
+void open_zones(Configuration& c, const std::vector<Penetration>& penetrations, double resolution) {
+  for (const Penetration& p : penetrations) {
+    const double below = p.curvature > 0 ? std::sqrt(2 * -p.depth / p.curvature) : resolution / 4;
+    const double room = p.x == 0 ? p.hi - p.x : p.x == pi ? p.x - p.lo : std::min(p.x - p.lo, p.hi - p.x);
+    const double w = std::min(0.5 * below, 0.25 * room);
+    if (!(w > 0)) continue;
+    insert_zone(c, p.x - w <= 0    ? zone_of(0, p.x + w, working_nodes)
+                   : p.x + w >= pi ? zone_of(p.x - w, pi, working_nodes)
+                                   : zone_of(p.x - w, p.x + w, working_nodes));
+  }
+}
+
+// Each zone with a negative pressure is cut at every such point: the pieces around the cuts,
+// less a margin, those long enough kept (a piece at the top or the valley keeps it).
+void cut_zones(Configuration& c, const std::vector<Tension>& tensions) {
+  for (std::size_t k = c.zones.size(); k-- > 0;) {
+    std::vector<double> cuts;
+    for (const Tension& t : tensions) {
+      if (t.zone == k) cuts.push_back(t.x);
+    }
+    if (cuts.empty()) continue;
+    std::sort(cuts.begin(), cuts.end());
+    const ZoneUnknowns zone = c.zones[k];
+    const double a = zone.geometry.a, b = zone.geometry.b, margin = cut_margin * (b - a);
+    c.zones.erase(c.zones.begin() + static_cast<std::ptrdiff_t>(k));
+    double lo = a;
+    cuts.push_back(b + margin);  // the last piece ends at b
+    for (double x : cuts) {
+      const double hi = std::min(x - margin, b);
+      if (hi - lo > shortest_piece * (b - a)) insert_zone(c, zone_of(lo, hi, zone.d.size()));
+      lo = std::max(x + margin, a);
+    }
+  }
+}
+
+}  // namespace
+
+double coefficient_tail(const std::vector<double>& d) {
+  double magnitude = 0;
+  for (double v : d) magnitude += std::fabs(v);
+  const std::size_t n = d.size();
+  return (std::fabs(d[n - 1]) + std::fabs(d[n - 2]) + std::fabs(d[n - 3])) / std::max(magnitude, 1e-300);
+}
+
+bool tracing() {
+  static const bool on = [] {
+    const char* value = std::getenv("WAVECONTACT_TRACE");
+    return value != nullptr && *value != '\0' && *value != '0';
+  }();
+  return on;
+}
+
+void trace_configuration(const char* what, double P, const Configuration& c, const char* outcome) {
+  if (!tracing()) return;
+  std::fprintf(stderr, "wavecontact trace: %s P = %.9g: %s, %zu zone%s:", what, P, outcome, c.zones.size(),
+               c.zones.size() == 1 ? "" : "s");
+  for (const ZoneUnknowns& z : c.zones) std::fprintf(stderr, " [%.6g, %.6g]/%zu", z.geometry.a, z.geometry.b, z.d.size());
+  std::fprintf(stderr, "\n");
+}
+
+SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P, Configuration c, int changes,
+                     const std::function<void()>& checkpoint) {
+  const SurfaceModel& surface = *model;
+  const ZoneSystem system(surface, P);
+  const auto kinked = [&](const ZoneUnknowns& z) {
+    return std::any_of(surface.kinks.begin(), surface.kinks.end(),
+                       [&](const Kink& k) { return k.angle > z.geometry.a && k.angle < z.geometry.b; });
+  };
+  // The guess's coefficients made consistent with its zones first: Newton's method then
+  // starts with the collocation rows met and moves the ends.
+  fit_nodes(c, surface.resolution);
+  system.relax(c);
+  c = system.newton(std::move(c), working_residual, checkpoint, true).configuration;
+  for (int change = 0; change <= changes; ++change) {
+    if (checkpoint) checkpoint();
+    fit_nodes(c, surface.resolution);
+    const ZoneSystem::Result r = system.newton(c, working_residual, checkpoint);
+    trace_configuration("newton at", P, r.configuration,
+                        r.outcome == ZoneSystem::Outcome::converged ? "converged"
+                        : r.outcome == ZoneSystem::Outcome::failed  ? "failed"
+                                                                    : "a stretch closes");
+    c = r.configuration;
+    if (r.outcome == ZoneSystem::Outcome::failed) {
+      // A zone across a kink, too coarse for its density, may keep Newton from converging.
+      if (!grow_nodes(c, 1e-6, kinked)) {
+        char text[120];
+        std::snprintf(text, sizeof text, "Newton's method did not converge on %zu zones (residual %.3g)",
+                      c.zones.size(), r.residual);
+        return {std::nullopt, text};
+      }
+    } else if (r.outcome == ZoneSystem::Outcome::stretch_closes) {
+      if (!close_stretch(c, r.stretch)) return {std::nullopt, "every zone vanished"};
+    } else if (!grow_nodes(c, working_tail)) {
+      const Verification v = verify(ContactSolution(model, c), gap_tolerance * surface.height_range, pressure_tolerance);
+      if (tracing()) {
+        std::fprintf(stderr, "wavecontact trace: verified: %zu tension%s, %zu penetration%s (lowest gap %.3g at %.6g)\n",
+                     v.tensions.size(), v.tensions.size() == 1 ? "" : "s", v.penetrations.size(),
+                     v.penetrations.size() == 1 ? "" : "s", v.lowest_gap, v.x_of_lowest_gap);
+      }
+      if (v.tensions.empty() && v.penetrations.empty()) return {std::move(c), {}};
+      cut_zones(c, v.tensions);
+      if (v.tensions.empty()) open_zones(c, v.penetrations, surface.resolution);
+      if (c.zones.empty()) return {std::nullopt, "every zone was cut away"};
+    }
+    system.relax(c);
+  }
+  return {std::nullopt, "the zones still changed after " + std::to_string(changes) + " changes"};
+}
+
+}  // namespace wavecontact::detail

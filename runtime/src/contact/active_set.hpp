@@ -1,0 +1,49 @@
+// The contact at one load from a guess of its zones (docs/contact.md): Newton's method on
+// the zone system, then every change of the zones that it or the verification of the whole
+// half period calls for, until the configuration is a contact:
+//   - a stretch that Newton's method closes: a gap between zones (they merge), a zone (it
+//     vanishes), the stretch to the top or to the valley (the zone runs through it);
+//   - a gap below 0 off the zones: a new zone at each penetration;
+//   - a pressure below 0 on a zone: the zone is cut there (split, or shortened at its end,
+//     or let go of the top or the valley).
+// The frictionless contact under a load is unique, so whatever the guess, a configuration
+// that passes the verification is the contact.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "configuration.hpp"
+#include "surface_model.hpp"
+
+namespace wavecontact::detail {
+
+inline constexpr int working_nodes = 16;          // Chebyshev nodes of a zone while settling
+inline constexpr double working_residual = 1e-10;  // Newton's tolerance while settling
+inline constexpr double gap_tolerance = 1e-9;      // of the height range
+inline constexpr double pressure_tolerance = 1e-9; // of the largest pressure
+inline constexpr int most_nodes = 4096;
+inline constexpr int most_working_nodes = 512;     // while settling, the zones are what matters
+
+// The part of a zone's coefficients the last three hold: how far its series is from converged.
+double coefficient_tail(const std::vector<double>& d);
+
+// WAVECONTACT_TRACE=1 in the environment: every Newton solve and change of zones on stderr
+// (where a solve went wrong, and why).
+bool tracing();
+void trace_configuration(const char* what, double P, const Configuration& c, const char* outcome);
+
+struct SettleOutcome {
+  std::optional<Configuration> contact;
+  std::string failure;  // why not, when there is none
+};
+
+// The contact under the load P from `guess` (its coefficients need not solve anything), in
+// at most `changes` changes of zones; `checkpoint` is called between Newton steps (the work
+// budget).
+SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& surface, double P, Configuration guess, int changes,
+                     const std::function<void()>& checkpoint);
+
+}  // namespace wavecontact::detail

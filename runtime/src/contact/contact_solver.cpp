@@ -1,0 +1,185 @@
+#include "contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <string>
+
+#include "active_set.hpp"
+#include "chebyshev.hpp"
+#include "constants.hpp"
+#include "grid_seed.hpp"
+#include "verification.hpp"
+#include "wavecontact/errors.hpp"
+#include "zone_field.hpp"
+#include "zone_system.hpp"
+
+namespace wavecontact::detail {
+
+namespace {
+
+constexpr int most_changes = 400;  // changes of zones in one attempt
+constexpr int quick_changes = 4;   // from one zone at the top
+constexpr double max_single_zone_harmonic = 8;  // the highest harmonic of a surface tried so
+
+}  // namespace
+
+ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double tolerance, int nodes, WorkBudget budget)
+    : surface_(std::move(surface)), tolerance_(tolerance), fixed_nodes_(nodes), budget_(std::move(budget)) {
+  // Full contact at P = 0: p0 = sum_{j>=1} d_j cos(j x^), the onset -2 pi min p0.
+  const ContactSolution full(surface_, full_contact_configuration(0, 0));
+  double lowest = std::numeric_limits<double>::infinity(), at = 0;
+  const int samples = std::max(256, static_cast<int>(8 * pi / surface_->resolution));
+  std::vector<double> xs, ps;
+  for (int i = 0; i <= samples; ++i) xs.push_back(pi * i / samples), ps.push_back(full.pressure(xs.back()));
+  for (const auto& [x, p] : local_minima(xs, ps, [&](double x) { return full.pressure(x); })) {
+    if (p < lowest) lowest = p, at = x;
+  }
+  (void)at;
+  onset_ = std::max(0.0, -2 * pi * lowest);
+}
+
+double ContactSolver::full_contact_load() const { return onset_; }
+
+void ContactSolver::check_budget() const {
+  budget_.check([&] {
+    char text[96];
+    std::snprintf(text, sizeof text, "solving at P = %.6g, the last attempt from ", target_load_);
+    return text + std::to_string(zones_tried_) + (zones_tried_ == 1 ? " zone" : " zones") + " in half a period";
+  });
+}
+
+Configuration ContactSolver::full_contact_configuration(double P, int nodes) const {
+  // One zone [0, pi] (h = 1, m = 0): d_j = j G_j (j >= 1) from (E/2) y, d_0 = P / (2 pi),
+  // C = log(2) d_0 - G_0; the nodes grow until the coefficients' tail is negligible.
+  const double half_E = surface_->E / 2;
+  int count = nodes > 0 ? nodes : std::max(working_nodes, static_cast<int>(2 * pi / surface_->resolution) + 8);
+  for (;;) {
+    const ZoneGeometry g(0, pi);
+    const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
+    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface_, g);
+    std::vector<double> values, G(static_cast<std::size_t>(count));
+    for (double xi : x) values.push_back(half_E * surface_->depth(xi) - (kink ? kink->potential(xi) : 0.0));
+    chebyshev::coefficients(values.data(), count, G.data());
+    Configuration c;
+    ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count))};
+    z.d[0] = (P / 2 - (kink ? kink->load() : 0.0)) / pi;  // P / 2 = pi d_0 + the correction's
+    double magnitude = 0;
+    for (int j = 1; j < count; ++j) {
+      z.d[static_cast<std::size_t>(j)] = j * G[static_cast<std::size_t>(j)];
+      magnitude += std::fabs(z.d[static_cast<std::size_t>(j)]);
+    }
+    c.C = std::log(2.0) * z.d[0] - G[0];
+    const double tail = std::fabs(z.d[static_cast<std::size_t>(count - 1)]) + std::fabs(z.d[static_cast<std::size_t>(count - 2)]);
+    c.zones.push_back(std::move(z));
+    if (nodes > 0 || tail <= 1e-15 * magnitude || count >= most_nodes) return c;
+    count = std::min(most_nodes, count * 2);
+  }
+}
+
+SolvedContact ContactSolver::full_contact(double P) const {
+  Configuration c = full_contact_configuration(P, fixed_nodes_);
+  const int nodes = static_cast<int>(c.zones[0].d.size());
+  return {std::make_shared<const ContactSolution>(surface_, std::move(c)), P, 0.0, 0.0, nodes};
+}
+
+std::optional<Configuration> ContactSolver::single_zone(double P) const {
+  // Tried on a surface without short wavelengths (a waviness alone), at its top.
+  if (surface_->top_angle != 0 || surface_->resolution < pi / max_single_zone_harmonic) return std::nullopt;
+  // Westergaard's sine of the top's curvature: P = pi E* kappa sin^2(a/2) (Hertz's for small
+  // a), taken when a few changes of zones settle it.
+  const double ratio = P / (pi * surface_->E * surface_->top_curvature);
+  const double w = ratio < 0.9 ? 2 * std::asin(std::sqrt(ratio)) : 0.8 * pi;
+  Configuration c;
+  c.zones.push_back({ZoneGeometry(0, w), std::vector<double>(working_nodes, 0.0)});
+  const ZoneSystem system(*surface_, P);
+  for (int i = 0; i < 3; ++i) system.relax(c);
+  zones_tried_ = 1;
+  return settle(surface_, P, std::move(c), quick_changes, [&] { check_budget(); }).contact;
+}
+
+Configuration ContactSolver::settle_at(double P, const Configuration* previous) const {
+  std::string failures;
+  const auto attempt = [&](const char* from, Configuration guess) -> std::optional<Configuration> {
+    zones_tried_ = guess.zones.size();
+    trace_configuration(from, P, guess, "a guess");
+    SettleOutcome s = settle(surface_, P, std::move(guess), most_changes, [&] { check_budget(); });
+    if (!s.contact) failures += std::string(failures.empty() ? "" : "; ") + "from " + from + ": " + s.failure;
+    return std::move(s.contact);
+  };
+  if (std::optional<Configuration> c = single_zone(P)) return std::move(*c);
+  const int cells = seed_cells(*surface_);
+  if (std::optional<Configuration> c = attempt("the grid's contact", grid_seed(*surface_, P, cells, working_nodes))) {
+    return std::move(*c);
+  }
+  if (previous) {
+    if (std::optional<Configuration> c = attempt("the previous load's contact", *previous)) return std::move(*c);
+  }
+  if (std::optional<Configuration> c = attempt("a finer grid's contact", grid_seed(*surface_, P, 2 * cells, working_nodes))) {
+    return std::move(*c);
+  }
+  throw BeyondReach("wavecontact::solve_contact: no contact found at P = " + std::to_string(P) + " (" + failures + ")");
+}
+
+std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads) const {
+  std::vector<std::size_t> order(loads.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return loads[a] < loads[b]; });
+  std::vector<SolvedContact> solved(loads.size());
+  std::optional<Configuration> previous;
+  for (std::size_t index : order) {
+    const double P = loads[index];
+    target_load_ = P;
+    if (P >= onset_) {
+      solved[index] = full_contact(P);
+      continue;
+    }
+    previous = settle_at(P, previous ? &*previous : nullptr);
+    solved[index] = refine(surface_, *previous, P, tolerance_, fixed_nodes_, [&] { check_budget(); });
+  }
+  return solved;
+}
+
+SingleZoneResult check_single_zone(const std::shared_ptr<const SurfaceModel>& surface, double a) {
+  // One zone [0, a^] alone: its coefficients d_j = j G_j / h (j >= 1) from the transform of
+  // (E/2) y, d_0 from the condition at a^ (bounded), C from the T_0 row; the nodes grow until
+  // the tail is negligible.
+  const ZoneGeometry g(0, a);
+  const double half_E = surface->E / 2;
+  int count = working_nodes;
+  Configuration c;
+  for (;;) {
+    const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
+    const double x_ref = x[static_cast<std::size_t>(count / 2)];
+    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface, g);
+    std::vector<double> values, G(static_cast<std::size_t>(count));
+    for (double xi : x) {
+      values.push_back(half_E * surface->height_difference(xi, x_ref) - (kink ? kink->potential(xi) : 0.0));
+    }
+    chebyshev::coefficients(values.data(), count, G.data());
+    G[0] += half_E * surface->depth(x_ref);
+    ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count))};
+    double alternating = 0, magnitude = 0;
+    for (int j = 1; j < count; ++j) {
+      z.d[static_cast<std::size_t>(j)] = j * G[static_cast<std::size_t>(j)] / g.h;
+      alternating += (j % 2 == 0 ? 1 : -1) * z.d[static_cast<std::size_t>(j)];
+      magnitude += std::fabs(z.d[static_cast<std::size_t>(j)]);
+    }
+    z.d[0] = -alternating;  // sum_j (-1)^j d_j = 0 at tau = -1 (x^ = a)
+    c.C = g.h * self_logarithm(g) * z.d[0] - G[0];
+    const double tail = std::fabs(z.d[static_cast<std::size_t>(count - 1)]) + std::fabs(z.d[static_cast<std::size_t>(count - 2)]);
+    c.zones = {std::move(z)};
+    if (tail <= 1e-15 * magnitude || count >= most_nodes) break;
+    count = std::min(most_nodes, 2 * count);
+  }
+  const ContactSolution solution(surface, c);
+  const double range = surface->height_range;
+  const Verification v = verify(solution, gap_tolerance * range, pressure_tolerance);
+  const bool penetrates = v.lowest_gap < -gap_tolerance * range;
+  return {v.pressure_ok && !penetrates, penetrates, v.lowest_gap, v.x_of_lowest_gap, v.lowest_pressure,
+          v.x_of_lowest_pressure};
+}
+
+}  // namespace wavecontact::detail

@@ -1,0 +1,59 @@
+// The unique contact of an even periodic surface under a load (the minimiser of a strictly
+// convex energy), at each of several loads (docs/contact.md).
+//
+// At each load: one zone at the top when it is the contact; else the zones of the contact on
+// a uniform grid (grid_seed.hpp) made exact by Newton's method on the zone system with every
+// change of zones it or the verification calls for (active_set.hpp); if that fails, the same
+// from the contact at the previous load, then from a grid twice as fine. The result is refined
+// (refinement.hpp): nodes until the series converge, an error estimate, the rounding. Full
+// contact's onset is known beforehand (p = P/(2 pi) + p0 in full contact).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "configuration.hpp"
+#include "refinement.hpp"
+#include "surface_model.hpp"
+#include "work_budget.hpp"
+
+namespace wavecontact::detail {
+
+class ContactSolver {
+ public:
+  // tolerance: the relative error estimate the result must meet; nodes > 0 fixes the nodes
+  // per zone.
+  ContactSolver(std::shared_ptr<const SurfaceModel> surface, double tolerance, int nodes, WorkBudget budget);
+
+  // The load (normalised) from which the contact is full.
+  double full_contact_load() const;
+
+  // The contact at each load (any order).
+  std::vector<SolvedContact> solve(const std::vector<double>& loads) const;
+
+ private:
+  Configuration settle_at(double P, const Configuration* previous) const;
+  std::optional<Configuration> single_zone(double P) const;
+  SolvedContact full_contact(double P) const;
+  Configuration full_contact_configuration(double P, int nodes) const;
+  void check_budget() const;
+
+  std::shared_ptr<const SurfaceModel> surface_;
+  double tolerance_;
+  int fixed_nodes_;
+  WorkBudget budget_;
+  double onset_ = 0;
+  mutable double target_load_ = 0;
+  mutable std::size_t zones_tried_ = 0;
+};
+
+// Whether the single zone [0, a^] carrying its own load (bounded at a^) is the contact.
+struct SingleZoneResult {
+  bool solution, penetrates;
+  double lowest_gap, x_of_lowest_gap;
+  double lowest_pressure, x_of_lowest_pressure;
+};
+SingleZoneResult check_single_zone(const std::shared_ptr<const SurfaceModel>& surface, double a);
+
+}  // namespace wavecontact::detail

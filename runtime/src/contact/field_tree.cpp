@@ -1,0 +1,175 @@
+#include "field_tree.hpp"
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "constants.hpp"
+
+namespace wavecontact::detail {
+
+namespace {
+
+constexpr double separation = 0.4;  // the largest radius/distance at which a node's moments act
+constexpr std::size_t leaf_zones = 2;
+
+// C(k, i) for k < order, as doubles (exact: below 2^53).
+template <int order>
+const std::array<std::array<double, order>, order>& binomials() {
+  static const auto table = [] {
+    std::array<std::array<double, order>, order> c{};
+    for (int k = 0; k < order; ++k) {
+      c[k][0] = 1;
+      for (int i = 1; i <= k; ++i) c[k][i] = c[k - 1][i - 1] + (i < k ? c[k - 1][i] : 0.0);
+    }
+    return c;
+  }();
+  return table;
+}
+
+// Moments about a new centre: `from` holds mu_i / r^i about c'; adds mu_k / R^k about c to
+// `to`, delta = c' - c. Every term is at most |mu|: (r + |delta|) <= R.
+template <int order>
+void shift(const std::vector<double>& from, double r, double delta, double R, std::vector<double>& to) {
+  const auto& C = binomials<order>();
+  std::array<double, order> rp{}, dp{};
+  rp[0] = dp[0] = 1;
+  for (int k = 1; k < order; ++k) rp[k] = rp[k - 1] * (r / R), dp[k] = dp[k - 1] * (delta / R);
+  for (int k = 0; k < order; ++k) {
+    double sum = 0;
+    for (int i = 0; i <= k; ++i) sum += C[k][i] * from[static_cast<std::size_t>(i)] * rp[i] * dp[k - i];
+    to[static_cast<std::size_t>(k)] += sum;
+  }
+}
+
+}  // namespace
+
+Abscissa Abscissa::of_angle(double x) {
+  const double sh = std::sin(x / 2), ch = std::cos(x / 2);
+  return {std::cos(x), 2 * sh * sh, 2 * ch * ch};
+}
+
+Abscissa Abscissa::midpoint(const Abscissa& a, const Abscissa& b) {
+  return {(a.s + b.s) / 2, (a.from_top + b.from_top) / 2, (a.from_valley + b.from_valley) / 2};
+}
+
+double difference(const Abscissa& a, const Abscissa& b) {
+  if (a.s >= 0 && b.s >= 0) return b.from_top - a.from_top;
+  if (a.s < 0 && b.s < 0) return a.from_valley - b.from_valley;
+  return a.s - b.s;
+}
+
+FieldTree::FieldTree(const Configuration& c) : zones_(c.zones) {
+  for (const ZoneUnknowns& z : c.zones) {
+    upper_.push_back(Abscissa::of_angle(z.geometry.a));
+    lower_.push_back(Abscissa::of_angle(z.geometry.b));
+  }
+  if (!c.zones.empty()) {
+    nodes_.reserve(2 * c.zones.size());
+    build(0, c.zones.size());
+  }
+}
+
+std::size_t FieldTree::build(std::size_t first, std::size_t last) {
+  const std::size_t at = nodes_.size();
+  nodes_.emplace_back();
+  Node node;
+  node.first = first, node.last = last;
+  node.centre = Abscissa::midpoint(upper_[first], lower_[last - 1]);
+  node.radius = difference(upper_[first], lower_[last - 1]) / 2;
+  node.moments.assign(order, 0.0);
+  if (last - first <= leaf_zones) {
+    // A zone's moments about its centre m: mu_k = h^{k+1} I_k, I_k = sum_j d_j Int T_j tau^k
+    // / sqrt(1 - tau^2) dtau = sum_j d_j pi 2^-k C(k, (k - j)/2) (k - j even, >= 0).
+    const auto& C = binomials<order>();
+    for (std::size_t l = first; l < last; ++l) {
+      const ZoneUnknowns& z = zones_[l];
+      const std::size_t count = z.d.size();
+      std::vector<double> own(order, 0.0);
+      double power = pi;  // pi 2^-k
+      for (int k = 0; k < order; ++k, power /= 2) {
+        double sum = 0;
+        for (int j = k % 2; j <= k && static_cast<std::size_t>(j) < count; j += 2) sum += z.d[static_cast<std::size_t>(j)] * C[k][(k - j) / 2];
+        own[static_cast<std::size_t>(k)] = z.geometry.h * power * sum;  // mu_k / h^k
+      }
+      const double delta = difference(Abscissa::midpoint(upper_[l], lower_[l]), node.centre);
+      shift<order>(own, z.geometry.h, delta, node.radius, node.moments);
+    }
+  } else {
+    const std::size_t middle = first + (last - first) / 2;
+    node.children[0] = build(first, middle);
+    node.children[1] = build(middle, last);
+    for (std::size_t child : node.children) {
+      const Node& n = nodes_[child];
+      shift<order>(n.moments, n.radius, difference(n.centre, node.centre), node.radius, node.moments);
+    }
+  }
+  node.moments_over_k = node.moments;
+  for (int k = 1; k < order; ++k) node.moments_over_k[static_cast<std::size_t>(k)] /= k;
+  nodes_[at] = std::move(node);
+  return at;
+}
+
+void FieldTree::add(std::size_t skip, const double* x, std::size_t count, double* potential, double* slope) const {
+  if (nodes_.empty() || count == 0) return;
+  std::vector<Abscissa> target(count);
+  for (std::size_t i = 0; i < count; ++i) target[i] = Abscissa::of_angle(x[i]);
+  // Of the moments, before the factor -1/pi.
+  std::vector<double> moment_potential(count, 0.0), moment_slope(count, 0.0), d(count);
+  std::size_t stack[128];
+  std::size_t depth = 0;
+  stack[depth++] = 0;
+  while (depth > 0) {
+    const Node& node = nodes_[stack[--depth]];
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < count; ++i) {
+      d[i] = difference(target[i], node.centre);
+      nearest = std::min(nearest, std::fabs(d[i]));
+    }
+    if (nearest * separation >= node.radius) {
+      // sum_k A_k t^k / k and sum_k A_k t^k by Horner's rule, every point at once, as many
+      // terms as the nearest point needs.
+      const double ratio = node.radius / nearest;
+      const int terms = ratio > 0 ? std::min(order - 1, static_cast<int>(std::ceil(-39.1439465808987777 / std::log(ratio)))) : 0;
+      const double* A = node.moments.data();
+      const double* A_over_k = node.moments_over_k.data();
+      constexpr std::size_t lanes = 8;  // points at a time: the accumulators stay in registers
+      for (std::size_t first = 0; first < count; first += lanes) {
+        const std::size_t n = std::min(lanes, count - first);
+        double tl[lanes] = {}, pot[lanes] = {}, slo[lanes] = {};
+        for (std::size_t j = 0; j < n; ++j) tl[j] = node.radius / d[first + j];
+        for (int k = terms; k >= 1; --k) {
+          const double a = A[k], b = A_over_k[k];
+          for (std::size_t j = 0; j < lanes; ++j) {
+            pot[j] = (pot[j] + b) * tl[j];
+            slo[j] = (slo[j] + a) * tl[j];
+          }
+        }
+        for (std::size_t j = 0; j < n; ++j) {
+          const std::size_t i = first + j;
+          moment_potential[i] += A[0] * std::log(std::fabs(d[i])) - pot[j];
+          moment_slope[i] += (A[0] + slo[j]) / d[i];
+        }
+      }
+    } else if (node.children[0] == 0) {
+      for (std::size_t l = node.first; l < node.last; ++l) {
+        if (l == skip) continue;
+        const ZoneUnknowns& z = zones_[l];
+        for (std::size_t i = 0; i < count; ++i) {
+          const FieldValue f = far_field(z.geometry, z.d.data(), static_cast<int>(z.d.size()), x[i]);
+          potential[i] += f.potential;
+          if (slope) slope[i] += f.slope;
+        }
+      }
+    } else {
+      stack[depth++] = node.children[0];
+      stack[depth++] = node.children[1];
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    potential[i] -= moment_potential[i] / pi;
+    if (slope) slope[i] -= moment_slope[i] / pi;
+  }
+}
+
+}  // namespace wavecontact::detail

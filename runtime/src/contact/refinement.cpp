@@ -1,0 +1,143 @@
+#include "refinement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "active_set.hpp"
+#include "constants.hpp"
+#include "verification.hpp"
+#include "wavecontact/errors.hpp"
+#include "zone_field.hpp"
+#include "zone_system.hpp"
+
+namespace wavecontact::detail {
+
+namespace {
+
+// How far two solutions of one topology differ: the ends (to the period) and, on each zone,
+// the pressure at 3 N + 8 points spread like Chebyshev's (to the largest pressure), short of
+// a hundredth of the zone from a free end (there the pressure goes like the root of the
+// distance to the end, whose own difference is the first term).
+std::vector<double> zone_differences(const ContactSolution& a, const ContactSolution& b, double highest) {
+  std::vector<double> difference;
+  for (std::size_t k = 0; k < a.zone_count(); ++k) {
+    const ZoneGeometry& g = a.zone(k);
+    double worst = std::max(std::fabs(g.a - b.zone(k).a), std::fabs(g.b - b.zone(k).b)) / pi;
+    const double margin = 0.01 * (g.b - g.a);
+    const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
+    const int count = 3 * static_cast<int>(a.configuration().zones[k].d.size()) + 8;
+    for (int i = 0; i <= count; ++i) {
+      const double x = (lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count);
+      worst = std::max(worst, std::fabs(a.pressure(x) - b.pressure(x)) / highest);
+    }
+    difference.push_back(worst);
+  }
+  return difference;
+}
+
+// The rounding of each zone's equations, to its largest coefficient: its load comes from the
+// T_0 coefficient of a sum whose terms reach |C| + (E/2)|y| + sum |Psi_l|, each |Psi_l| at
+// most its load's logarithm and its coefficients' sum.
+double rounding_estimate(const SurfaceModel& surface, const Configuration& c) {
+  double largest = 0;
+  std::vector<double> magnitude;
+  for (const ZoneUnknowns& z : c.zones) {
+    double sum = 0;
+    for (double d : z.d) sum += std::fabs(d);
+    magnitude.push_back(z.geometry.h * sum);
+    largest = std::max(largest, sum);
+  }
+  double rounding = 0;
+  for (std::size_t k = 0; k < c.zones.size(); ++k) {
+    const ZoneGeometry& g = c.zones[k].geometry;
+    const double s = std::cos((g.a + g.b) / 2);
+    double terms = std::fabs(c.C) + surface.E / 2 * std::fabs(surface.depth((g.a + g.b) / 2));
+    for (std::size_t l = 0; l < c.zones.size(); ++l) {
+      if (l == k) continue;
+      const ZoneGeometry& gl = c.zones[l].geometry;
+      terms += magnitude[l] * (std::fabs(std::log(std::max(std::fabs(s - gl.m), gl.h))) + 1);
+    }
+    rounding = std::max(rounding, std::numeric_limits<double>::epsilon() * terms / (g.h * self_logarithm(g)) / largest);
+  }
+  return rounding;
+}
+
+}  // namespace
+
+SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
+                     double tolerance, int fixed_nodes, const std::function<void()>& checkpoint) {
+  // The nodes of each zone double until its pressure and ends change by less than a tenth of
+  // the tolerance (or, fixed, are compared with half as many again); the error estimate is the
+  // last change, that of the coarser solution: an upper bound while the series converge.
+  const ZoneSystem system(*surface, P);
+  const double range = surface->height_range;
+  // Newton's tolerance: a thousandth of the error tolerated (a coefficient's error is at
+  // most its index times its row's residual), within the residuals' rounding (about 1e-13
+  // of each zone's own potential).
+  const double residual = std::clamp(1e-3 * tolerance, 1e-13, 1e-10);
+  const auto solve = [&](Configuration start) {
+    system.relax(start);
+    const ZoneSystem::Result r = system.newton(start, residual, checkpoint);
+    if (r.outcome != ZoneSystem::Outcome::converged && !(r.residual < 1e-9)) {
+      throw BeyondReach("wavecontact::solve_contact: Newton's method did not converge refining the contact at P = " +
+                        std::to_string(P));
+    }
+    return r.configuration;
+  };
+  Configuration c = settled;
+  if (fixed_nodes > 0) {
+    for (ZoneUnknowns& z : c.zones) z.d.resize(static_cast<std::size_t>(fixed_nodes), 0.0);
+  }
+  c = solve(c);
+  // A zone keeps doubling while its change is above a tenth of the tolerance and still falls
+  // (by four at least: below, its rounding is reached).
+  std::vector<double> difference, previous(c.zones.size(), std::numeric_limits<double>::infinity());
+  std::vector<bool> converging(c.zones.size(), true);
+  const double highest = verify(ContactSolution(surface, c), gap_tolerance * range, pressure_tolerance).highest_pressure;
+  for (int round = 0; round < 10; ++round) {
+    Configuration finer = c;
+    bool grown = false;
+    for (std::size_t k = 0; k < finer.zones.size(); ++k) {
+      const bool again = difference.empty() || (difference[k] > 0.1 * tolerance && converging[k]);
+      const std::size_t n = finer.zones[k].d.size();
+      const std::size_t target = fixed_nodes > 0 ? n + n / 2 : std::min<std::size_t>(most_nodes, 2 * n);
+      if (again && target > n) finer.zones[k].d.resize(target, 0.0), grown = true;
+    }
+    if (!grown) break;
+    finer = solve(finer);
+    const std::vector<double> change = zone_differences(ContactSolution(surface, c), ContactSolution(surface, finer), highest);
+    for (std::size_t k = 0; k < change.size(); ++k) {
+      if (finer.zones[k].d.size() != c.zones[k].d.size()) {
+        converging[k] = change[k] < 0.25 * previous[k];
+        previous[k] = change[k];
+      }
+    }
+    difference = change;
+    if (fixed_nodes > 0) break;
+    c = std::move(finer);
+  }
+  auto solution = std::make_shared<const ContactSolution>(surface, c);
+  const Verification v = verify(*solution, gap_tolerance * range, pressure_tolerance);
+  const double error = difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end());
+  int nodes = 0;
+  for (const ZoneUnknowns& z : c.zones) nodes = std::max(nodes, static_cast<int>(z.d.size()));
+  const double rounding = rounding_estimate(*surface, c);
+  // Admissible within the error of the solution itself (a gap of the estimate's order next to
+  // an end whose place is as uncertain).
+  const double allowed = std::max(gap_tolerance, 10 * std::max(error, rounding)) * range;
+  if (!v.pressure_ok || v.lowest_gap < -allowed) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "wavecontact::solve_contact: the refined contact at P = %.6g is not admissible (lowest pressure "
+                  "%.3g, lowest gap %.3g)",
+                  P, v.lowest_pressure, v.lowest_gap);
+    throw BeyondReach(text);
+  }
+  return {solution, P, std::max(error, rounding), rounding, nodes};
+}
+
+}  // namespace wavecontact::detail
