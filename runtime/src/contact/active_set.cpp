@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 #include "constants.hpp"
 #include "solution.hpp"
+#include "trace.hpp"
 #include "verification.hpp"
 #include "zone_system.hpp"
 
@@ -116,22 +116,6 @@ double coefficient_tail(const std::vector<double>& d) {
   return (std::fabs(d[n - 1]) + std::fabs(d[n - 2]) + std::fabs(d[n - 3])) / std::max(magnitude, 1e-300);
 }
 
-bool tracing() {
-  static const bool on = [] {
-    const char* value = std::getenv("WAVECONTACT_TRACE");
-    return value != nullptr && *value != '\0' && *value != '0';
-  }();
-  return on;
-}
-
-void trace_configuration(const char* what, double P, const Configuration& c, const char* outcome) {
-  if (!tracing()) return;
-  std::fprintf(stderr, "wavecontact trace: %s P = %.9g: %s, %zu zone%s:", what, P, outcome, c.zones.size(),
-               c.zones.size() == 1 ? "" : "s");
-  for (const ZoneUnknowns& z : c.zones) std::fprintf(stderr, " [%.6g, %.6g]/%zu", z.geometry.a, z.geometry.b, z.d.size());
-  std::fprintf(stderr, "\n");
-}
-
 SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P, Configuration c, int changes,
                      const std::function<void()>& checkpoint) {
   const SurfaceModel& surface = *model;
@@ -164,6 +148,8 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       }
     } else if (r.outcome == ZoneSystem::Outcome::stretch_closes) {
       if (!close_stretch(c, r.stretch)) return {std::nullopt, "every zone vanished"};
+    } else if (!system.windows_fit(c)) {
+      continue;  // a kink window chosen again
     } else if (!grow_nodes(c, working_tail)) {
       const Verification v = verify(ContactSolution(model, c), gap_tolerance * surface.height_range, pressure_tolerance);
       if (tracing()) {

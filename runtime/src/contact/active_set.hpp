@@ -30,11 +30,6 @@ inline constexpr int most_working_nodes = 512;     // while settling, the zones 
 // The part of a zone's coefficients the last three hold: how far its series is from converged.
 double coefficient_tail(const std::vector<double>& d);
 
-// WAVECONTACT_TRACE=1 in the environment: every Newton solve and change of zones on stderr
-// (where a solve went wrong, and why).
-bool tracing();
-void trace_configuration(const char* what, double P, const Configuration& c, const char* outcome);
-
 struct SettleOutcome {
   std::optional<Configuration> contact;
   std::string failure;  // why not, when there is none

@@ -10,8 +10,10 @@ namespace wavecontact::detail {
 
 struct ZoneUnknowns {
   ZoneGeometry geometry;
-  std::vector<double> d;  // N + 1 coefficients (the zone's nodes: N + 1)
-  double birth_load = -1;  // where the continuation saw it open (negative: not known)
+  std::vector<double> d;  // the density's coefficients, one a Chebyshev node
+  // The radius in s of the window of the kink correction (kink_correction.hpp) the density
+  // holds beside d: 0 for none. Kept through a Newton solve, so that its equations are smooth.
+  double kink_window = 0;
 };
 
 struct Configuration {

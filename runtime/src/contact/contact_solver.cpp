@@ -11,6 +11,7 @@
 #include "chebyshev.hpp"
 #include "constants.hpp"
 #include "grid_seed.hpp"
+#include "trace.hpp"
 #include "verification.hpp"
 #include "wavecontact/errors.hpp"
 #include "zone_field.hpp"
@@ -59,12 +60,13 @@ Configuration ContactSolver::full_contact_configuration(double P, int nodes) con
   for (;;) {
     const ZoneGeometry g(0, pi);
     const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
-    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface_, g);
+    const double window = KinkCorrection::radius_for(*surface_, g);
+    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface_, g, window);
     std::vector<double> values, G(static_cast<std::size_t>(count));
     for (double xi : x) values.push_back(half_E * surface_->depth(xi) - (kink ? kink->potential(xi) : 0.0));
     chebyshev::coefficients(values.data(), count, G.data());
     Configuration c;
-    ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count))};
+    ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count)), window};
     z.d[0] = (P / 2 - (kink ? kink->load() : 0.0)) / pi;  // P / 2 = pi d_0 + the correction's
     double magnitude = 0;
     for (int j = 1; j < count; ++j) {
@@ -153,14 +155,15 @@ SingleZoneResult check_single_zone(const std::shared_ptr<const SurfaceModel>& su
   for (;;) {
     const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
     const double x_ref = x[static_cast<std::size_t>(count / 2)];
-    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface, g);
+    const double window = KinkCorrection::radius_for(*surface, g);
+    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface, g, window);
     std::vector<double> values, G(static_cast<std::size_t>(count));
     for (double xi : x) {
       values.push_back(half_E * surface->height_difference(xi, x_ref) - (kink ? kink->potential(xi) : 0.0));
     }
     chebyshev::coefficients(values.data(), count, G.data());
     G[0] += half_E * surface->depth(x_ref);
-    ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count))};
+    ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count)), window};
     double alternating = 0, magnitude = 0;
     for (int j = 1; j < count; ++j) {
       z.d[static_cast<std::size_t>(j)] = j * G[static_cast<std::size_t>(j)] / g.h;

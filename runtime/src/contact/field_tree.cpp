@@ -110,55 +110,80 @@ std::size_t FieldTree::build(std::size_t first, std::size_t last) {
   return at;
 }
 
-void FieldTree::add(std::size_t skip, const double* x, std::size_t count, double* potential, double* slope) const {
-  if (nodes_.empty() || count == 0) return;
+FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const {
+  const std::size_t count = x.size();
+  Batch out;
+  out.difference.assign(count, 0.0);
+  if (slopes) out.slope.assign(count, 0.0);
+  if (nodes_.empty()) return out;
+  const Abscissa reference = Abscissa::of_angle(x_ref);
   std::vector<Abscissa> target(count);
-  for (std::size_t i = 0; i < count; ++i) target[i] = Abscissa::of_angle(x[i]);
-  // Of the moments, before the factor -1/pi.
-  std::vector<double> moment_potential(count, 0.0), moment_slope(count, 0.0), d(count);
+  std::vector<double> from_reference(count);  // s_i - s_ref
+  for (std::size_t i = 0; i < count; ++i) {
+    target[i] = Abscissa::of_angle(x[i]);
+    from_reference[i] = difference(target[i], reference);
+  }
+  // The moments' part, before the factor -1/pi.
+  double moment_reference = 0;
+  std::vector<double> moment_difference(count, 0.0), moment_slope(slopes ? count : 0, 0.0), d(count);
   std::size_t stack[128];
   std::size_t depth = 0;
   stack[depth++] = 0;
   while (depth > 0) {
     const Node& node = nodes_[stack[--depth]];
-    double nearest = std::numeric_limits<double>::infinity();
+    const double d_ref = difference(reference, node.centre);
+    double nearest = std::fabs(d_ref);
     for (std::size_t i = 0; i < count; ++i) {
-      d[i] = difference(target[i], node.centre);
+      d[i] = d_ref + from_reference[i];
       nearest = std::min(nearest, std::fabs(d[i]));
     }
     if (nearest * separation >= node.radius) {
-      // sum_k A_k t^k / k and sum_k A_k t^k by Horner's rule, every point at once, as many
-      // terms as the nearest point needs.
+      // P(t) = sum_{k>=1} A_k t^k / k at t = R/d: at the reference by Horner's rule, and
+      // P(t_i) - P(t_ref) = (t_i - t_ref) D_i by the divided differences of the same
+      // recurrence (D <- D t_i + u_ref); the logarithm's difference as log1p.
       const double ratio = node.radius / nearest;
       const int terms = ratio > 0 ? std::min(order - 1, static_cast<int>(std::ceil(-39.1439465808987777 / std::log(ratio)))) : 0;
       const double* A = node.moments.data();
       const double* A_over_k = node.moments_over_k.data();
+      const double t_ref = node.radius / d_ref;
+      double partial[order + 1];  // u_ref after each coefficient, from the highest
+      partial[terms + 1] = 0;
+      double u = 0;
+      for (int k = terms; k >= 1; --k) u = u * t_ref + A_over_k[k], partial[k] = u;
+      const double P_ref = u * t_ref;
+      moment_reference += A[0] * std::log(std::fabs(d_ref)) - P_ref;
       constexpr std::size_t lanes = 8;  // points at a time: the accumulators stay in registers
       for (std::size_t first = 0; first < count; first += lanes) {
         const std::size_t n = std::min(lanes, count - first);
-        double tl[lanes] = {}, pot[lanes] = {}, slo[lanes] = {};
-        for (std::size_t j = 0; j < n; ++j) tl[j] = node.radius / d[first + j];
+        double t[lanes] = {}, D[lanes] = {}, S[lanes] = {};
+        for (std::size_t j = 0; j < n; ++j) t[j] = node.radius / d[first + j];
+        // Over k = terms .. 1 of u_k = u_{k+1} t + A_k/k, then the final u_0 = u_1 t (c_0 = 0).
         for (int k = terms; k >= 1; --k) {
-          const double a = A[k], b = A_over_k[k];
+          const double previous = partial[k + 1], a = A[k];
           for (std::size_t j = 0; j < lanes; ++j) {
-            pot[j] = (pot[j] + b) * tl[j];
-            slo[j] = (slo[j] + a) * tl[j];
+            D[j] = D[j] * t[j] + previous;
+            S[j] = (S[j] + a) * t[j];
           }
         }
         for (std::size_t j = 0; j < n; ++j) {
           const std::size_t i = first + j;
-          moment_potential[i] += A[0] * std::log(std::fabs(d[i])) - pot[j];
-          moment_slope[i] += (A[0] + slo[j]) / d[i];
+          const double Dj = D[j] * t[j] + partial[1];
+          const double t_minus = -node.radius * from_reference[i] / (d[i] * d_ref);  // t_i - t_ref
+          moment_difference[i] += A[0] * std::log1p(from_reference[i] / d_ref) - t_minus * Dj;
+          if (slopes) moment_slope[i] += (A[0] + S[j]) / d[i];
         }
       }
     } else if (node.children[0] == 0) {
       for (std::size_t l = node.first; l < node.last; ++l) {
         if (l == skip) continue;
         const ZoneUnknowns& z = zones_[l];
+        const int n = static_cast<int>(z.d.size());
+        const double at_reference = far_potential(z.geometry, z.d.data(), n, x_ref);
+        out.at_reference += at_reference;
         for (std::size_t i = 0; i < count; ++i) {
-          const FieldValue f = far_field(z.geometry, z.d.data(), static_cast<int>(z.d.size()), x[i]);
-          potential[i] += f.potential;
-          if (slope) slope[i] += f.slope;
+          const FieldValue f = far_field(z.geometry, z.d.data(), n, x[i]);
+          out.difference[i] += f.potential - at_reference;
+          if (slopes) out.slope[i] += f.slope;
         }
       }
     } else {
@@ -166,10 +191,12 @@ void FieldTree::add(std::size_t skip, const double* x, std::size_t count, double
       stack[depth++] = node.children[1];
     }
   }
+  out.at_reference -= moment_reference / pi;
   for (std::size_t i = 0; i < count; ++i) {
-    potential[i] -= moment_potential[i] / pi;
-    if (slope) slope[i] -= moment_slope[i] / pi;
+    out.difference[i] -= moment_difference[i] / pi;
+    if (slopes) out.slope[i] -= moment_slope[i] / pi;
   }
+  return out;
 }
 
 }  // namespace wavecontact::detail

@@ -32,12 +32,18 @@ class FieldTree {
   // not in it (the few zones that have one add its potential themselves).
   explicit FieldTree(const Configuration& c);
 
-  // Adds the potential and its slope d/ds of every zone but `skip` (any value past the last
-  // zone skips none) at the angles x[0 .. count) to potential[] and slope[] (slope may be
-  // null); the points must lie off every zone they count. The points are taken together:
-  // a node acts on all of them by its moments when it is far enough from the nearest, so a
-  // batch should be close together (one zone's nodes).
-  void add(std::size_t skip, const double* x, std::size_t count, double* potential, double* slope) const;
+  // The potential of every zone but `skip` (any value past the last zone skips none) at a
+  // batch of nearby points x[i] (one zone's nodes), as its values at a reference point x_ref
+  // of the batch and the differences from it: the differences keep their digits where the
+  // potential itself is large (the sum over every zone) and its variation over the batch is
+  // small. A node acts on the whole batch by its moments when it is far enough from the
+  // nearest point. The points must lie off every zone they count.
+  struct Batch {
+    double at_reference = 0;
+    std::vector<double> difference;  // Psi(x_i) - Psi(x_ref)
+    std::vector<double> slope;       // dPsi/ds at x_i, when asked for
+  };
+  Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const;
 
  private:
   static constexpr int order = 44;  // moments mu_0 .. mu_{order-1}

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <complex>
 #include <vector>
-#include <cstdio>
-#include <cstdlib>
 
 #include <unsupported/Eigen/FFT>
 
@@ -94,7 +92,7 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
     const double scale = mean_pressure * static_cast<double>(n) / total;
     double change = 0;
     for (std::size_t i = 0; i < n; ++i) p[i] *= scale, change += std::fabs(p[i] - before[i]);
-    if (change < settled * mean_pressure * static_cast<double>(n) && iteration > 2) { if (std::getenv("WC_COUNT")) std::fprintf(stderr, "PK iterations %d\n", iteration); break; }
+    if (change < settled * mean_pressure * static_cast<double>(n) && iteration > 2) break;
   }
   return p;
 }

@@ -85,16 +85,41 @@ KinkCorrection::KinkCorrection(const Kink& kink, double r) : kink_(kink), r_(r) 
   }
 }
 
-std::shared_ptr<const KinkCorrection> KinkCorrection::of(const SurfaceModel& surface, const ZoneGeometry& zone) {
+namespace {
+
+// The kink well inside the zone (room: its distance in s from the nearer end), if any.
+const Kink* kink_inside(const SurfaceModel& surface, const ZoneGeometry& zone, double& room) {
   for (const Kink& kink : surface.kinks) {
     if (!(kink.angle > zone.a && kink.angle < zone.b)) continue;
     const double upper = std::cos(zone.a), lower = std::cos(zone.b);  // s of the ends
-    const double room = std::min(upper - kink.s, kink.s - lower);
-    if (room < least_inside * (upper - lower)) return nullptr;
-    // The largest radius of the grid 0.9 radius 2^-k within 0.9 of the room: windows are
-    // few and each computed once, so the residual is cheap and smooth between grid points.
-    double r = 0.9 * kink.radius;
-    while (r > 0.9 * room) r *= 0.5;
+    room = std::min(upper - kink.s, kink.s - lower);
+    return room < least_inside * (upper - lower) ? nullptr : &kink;
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+double KinkCorrection::radius_for(const SurfaceModel& surface, const ZoneGeometry& zone) {
+  double room = 0;
+  const Kink* kink = kink_inside(surface, zone, room);
+  if (!kink) return 0;
+  double r = 0.9 * kink->radius;  // few windows, each computed once
+  while (r > 0.9 * room) r *= 0.5;
+  return r;
+}
+
+bool KinkCorrection::fits(const SurfaceModel& surface, const ZoneGeometry& zone, double r) {
+  double room = 0;
+  const Kink* kink = kink_inside(surface, zone, room);
+  return kink ? r > 0 && r <= room : r == 0;
+}
+
+std::shared_ptr<const KinkCorrection> KinkCorrection::of(const SurfaceModel& surface, const ZoneGeometry& zone,
+                                                         double r) {
+  if (r == 0) return nullptr;
+  for (const Kink& kink : surface.kinks) {
+    if (!(kink.angle > zone.a && kink.angle < zone.b)) continue;
     const std::lock_guard<std::mutex> lock(kink.windows->mutex);
     std::shared_ptr<const KinkCorrection>& window = kink.windows->windows[r];
     if (!window) window = std::make_shared<const KinkCorrection>(kink, r);

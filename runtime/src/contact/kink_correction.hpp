@@ -25,9 +25,15 @@ namespace wavecontact::detail {
 
 class KinkCorrection {
  public:
-  // The correction of a zone the kink lies well inside (nullptr otherwise): windows on a
-  // geometric grid of radii, each computed once and kept by the kink.
-  static std::shared_ptr<const KinkCorrection> of(const SurfaceModel& surface, const ZoneGeometry& zone);
+  // The window radius for a zone: the largest of the geometric grid 0.9 R 2^-k (R the
+  // branches' analyticity radius) within 0.9 of the room between the kink and the zone's
+  // ends, for the kink the zone holds well inside; 0 for none.
+  static double radius_for(const SurfaceModel& surface, const ZoneGeometry& zone);
+  // The correction of radius r of the kink inside the zone (nullptr for r = 0 or none); each
+  // window is computed once and kept by the kink.
+  static std::shared_ptr<const KinkCorrection> of(const SurfaceModel& surface, const ZoneGeometry& zone, double r);
+  // Whether the window of radius r lies within the zone (or r = 0 and no kink needs one).
+  static bool fits(const SurfaceModel& surface, const ZoneGeometry& zone, double r);
 
   // q_k at s = cos x^ (0 outside the window).
   double density(double s) const;

@@ -39,31 +39,33 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
   return difference;
 }
 
-// The rounding of each zone's equations, to its largest coefficient: its load comes from the
-// T_0 coefficient of a sum whose terms reach |C| + (E/2)|y| + sum |Psi_l|, each |Psi_l| at
-// most its load's logarithm and its coefficients' sum.
-double rounding_estimate(const SurfaceModel& surface, const Configuration& c) {
-  double largest = 0;
+// How far rounding moves the contact: the response to a shift of each zone's T_0 row by the
+// rounding of the sum it comes from, |C| + (E/2)|y - y_top| + sum |Psi_l| (each |Psi_l| at
+// most its coefficients' sum times its logarithm), with alternating signs; relative to the
+// largest pressure, the ends to the period (as zone_differences).
+double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
+                         const Configuration& c, double highest) {
   std::vector<double> magnitude;
   for (const ZoneUnknowns& z : c.zones) {
     double sum = 0;
     for (double d : z.d) sum += std::fabs(d);
     magnitude.push_back(z.geometry.h * sum);
-    largest = std::max(largest, sum);
   }
-  double rounding = 0;
+  std::vector<double> shift;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
     const ZoneGeometry& g = c.zones[k].geometry;
     const double s = std::cos((g.a + g.b) / 2);
-    double terms = std::fabs(c.C) + surface.E / 2 * std::fabs(surface.depth((g.a + g.b) / 2));
+    double terms = std::fabs(c.C) + surface->E / 2 * std::fabs(surface->depth((g.a + g.b) / 2));
     for (std::size_t l = 0; l < c.zones.size(); ++l) {
       if (l == k) continue;
       const ZoneGeometry& gl = c.zones[l].geometry;
       terms += magnitude[l] * (std::fabs(std::log(std::max(std::fabs(s - gl.m), gl.h))) + 1);
     }
-    rounding = std::max(rounding, std::numeric_limits<double>::epsilon() * terms / (g.h * self_logarithm(g)) / largest);
+    shift.push_back((k % 2 == 0 ? 1 : -1) * std::numeric_limits<double>::epsilon() * terms);
   }
-  return rounding;
+  const std::vector<double> moved =
+      zone_differences(ContactSolution(surface, c), ContactSolution(surface, system.perturbed(c, shift)), highest);
+  return moved.empty() ? 0.0 : *std::max_element(moved.begin(), moved.end());
 }
 
 }  // namespace
@@ -81,12 +83,15 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
   const double residual = std::clamp(1e-3 * tolerance, 1e-13, 1e-10);
   const auto solve = [&](Configuration start) {
     system.relax(start);
-    const ZoneSystem::Result r = system.newton(start, residual, checkpoint);
-    if (r.outcome != ZoneSystem::Outcome::converged && !(r.residual < 1e-9)) {
-      throw BeyondReach("wavecontact::solve_contact: Newton's method did not converge refining the contact at P = " +
-                        std::to_string(P));
+    for (int attempt = 0;; ++attempt) {
+      const ZoneSystem::Result r = system.newton(start, residual, checkpoint);
+      if (r.outcome != ZoneSystem::Outcome::converged && !(r.residual < 1e-9)) {
+        throw BeyondReach("wavecontact::solve_contact: Newton's method did not converge refining the contact at P = " +
+                          std::to_string(P) + " (residual " + std::to_string(r.residual) + ")");
+      }
+      if (system.windows_fit(r.configuration) || attempt == 2) return r.configuration;
+      start = r.configuration;  // a kink window chosen again
     }
-    return r.configuration;
   };
   Configuration c = settled;
   if (fixed_nodes > 0) {
@@ -125,7 +130,7 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
   const double error = difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end());
   int nodes = 0;
   for (const ZoneUnknowns& z : c.zones) nodes = std::max(nodes, static_cast<int>(z.d.size()));
-  const double rounding = rounding_estimate(*surface, c);
+  const double rounding = rounding_estimate(surface, system, c, highest);
   // Admissible within the error of the solution itself (a gap of the estimate's order next to
   // an end whose place is as uncertain).
   const double allowed = std::max(gap_tolerance, 10 * std::max(error, rounding)) * range;

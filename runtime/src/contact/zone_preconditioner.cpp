@@ -52,7 +52,7 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
     const double lambda = self_logarithm(g);
     b.diagonal.resize(static_cast<std::size_t>(M));
     b.diagonal[0] = lambda;
-    for (int j = 1; j < M; ++j) b.diagonal[static_cast<std::size_t>(j)] = 1.0 / j;
+    for (int j = 1; j < M; ++j) b.diagonal[static_cast<std::size_t>(j)] = 1;  // row j is j (own_j - G_j)
     b.S = Eigen::MatrixXd(f, M);
     for (int e = 0; e < f; ++e) {
       const bool plus = lz.a_free && e == 0;  // the first end row is tau = +1 when a is free
@@ -86,7 +86,7 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
           const std::size_t u = static_cast<std::size_t>(j);
           // The own potential at fixed h d: log(2/h) h d_0 and h d_j / j.
           const double own = j == 0 ? -z.d[0] * dh : 0.0;
-          b.E(j, column) = (own - T[u]) * rate / lz.row_scale;
+          b.E(j, column) = (j == 0 ? 1 : j) * (own - T[u]) * rate / lz.row_scale;
         }
         ++column;
       }

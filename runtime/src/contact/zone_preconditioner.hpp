@@ -5,7 +5,7 @@
 // are smooth and small: GMRES takes them.
 //
 // A zone's block is an arrowhead: its coefficients meet their own collocation rows on the
-// diagonal (log(2/h) for T_0, 1/j for T_j), the ends add a column each (the own potential's
+// diagonal (log(2/h) for T_0, 1 for T_j: row j is scaled by j), the ends add a column each (the own potential's
 // change with h, and the nodes' motion through the field), the end conditions a row each. It
 // is solved through the Schur complement on the ends (at most 2 x 2): O(nodes) a zone.
 #pragma once

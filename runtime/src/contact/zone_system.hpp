@@ -40,7 +40,7 @@ struct SystemLayout {
     bool a_upper = false, b_upper = false;  // in the upper half: held as 1 - s (else 1 + s)
     double a_rate = 0, b_rate = 0;          // d(x^ of the end) / d(its unknown), at the start
     double a = 0, b = 0;
-    double birth_load = -1;  // carried through (ZoneUnknowns)
+    double kink_window = 0;  // carried through (ZoneUnknowns)
     int block() const { return free_ends + count; }
   };
   std::vector<Zone> zones;
@@ -55,12 +55,10 @@ struct ZoneFields {
   std::vector<std::shared_ptr<const KinkCorrection>> kinks;
   std::vector<std::size_t> kinked;  // the zones that have one
   FieldTree tree;
-  // The potential at the angles x[0 .. count) of every zone but `skip` (past the last:
-  // none), with its slope d/ds (the kink corrections' slopes left out; slope may be null),
-  // a batch of nearby points as FieldTree::add takes them.
-  void evaluate(std::size_t skip, const std::vector<double>& x, std::vector<double>& potential,
-                std::vector<double>* slope) const;
-  // The same at one point.
+  // The potential of every zone but `skip` (past the last: none) at a batch of nearby
+  // points, as FieldTree::evaluate gives it (the kink corrections' slopes left out).
+  FieldTree::Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const;
+  // The potential at one point.
   double potential(double x, std::size_t skip) const;
 };
 
@@ -94,10 +92,31 @@ class ZoneSystem {
   Result newton(Configuration c, double tolerance, const std::function<void()>& checkpoint,
                 bool ends_fixed = false) const;
 
+  // Whether every zone's kink window lies within the zone (ends move during a solve; a
+  // window that no longer fits is chosen again by the next).
+  bool windows_fit(const Configuration& c) const;
+
   // The scaled residuals of c (for tests and for the solver's checks).
   std::vector<double> residuals(const Configuration& c) const;
 
+  // The solution of the equations linearised at c (a solution) with each zone's T_0 row
+  // shifted by shift[k] (a potential): how far a perturbation of the equations, such as their
+  // rounding, moves the contact.
+  Configuration perturbed(const Configuration& c, const std::vector<double>& shift) const;
+
  private:
+  // A point of Newton's method: the configuration, its packed unknowns, its residuals and
+  // the other zones' field's slope at each zone's nodes (for the preconditioner).
+  struct Linearisation {
+    Configuration c;
+    SystemLayout layout;
+    std::vector<double> X, F;
+    std::vector<std::vector<double>> external_slope;
+  };
+  Linearisation linearise(Configuration c, bool ends_fixed) const;
+  // J s = rhs at `at`, to the relative tolerance, by preconditioned GMRES.
+  std::vector<double> linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance) const;
+
   SystemLayout layout(const Configuration& c, bool ends_fixed) const;  // fixed for one Newton solve
   std::vector<double> pack(const Configuration& c, const SystemLayout& L) const;
   Configuration unpack(const std::vector<double>& X, const SystemLayout& L) const;
