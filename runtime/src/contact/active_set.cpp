@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "constants.hpp"
+#include "kink_correction.hpp"
 #include "solution.hpp"
 #include "trace.hpp"
 #include "verification.hpp"
@@ -20,11 +21,15 @@ constexpr double shortest_piece = 0.02;      // of a zone's width: a shorter pie
 
 // At least the nodes a zone's width asks for: four a half wavelength of the shortest harmonic
 // on top of the 16 of a cap, so that the density of a zone that spans several asperities is
-// resolved before Newton's method meets it.
-void fit_nodes(Configuration& c, double resolution) {
+// resolved before Newton's method meets it; and for a zone across a kink, eight for each
+// window radius of its extent in s, so that the window's edges are resolved (coarser, the
+// collocation has roots with the ends far from the contact's).
+void fit_nodes(Configuration& c, const SurfaceModel& surface) {
   for (ZoneUnknowns& z : c.zones) {
-    const double halves = (z.geometry.b - z.geometry.a) / resolution;
-    const std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
+    const double halves = (z.geometry.b - z.geometry.a) / surface.resolution;
+    std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
+    const double r = KinkCorrection::radius_for(surface, z.geometry);
+    if (r > 0) needed = std::max(needed, static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
     if (z.d.size() < needed) z.d.resize(std::min<std::size_t>(most_working_nodes, needed), 0.0);
   }
 }
@@ -126,12 +131,12 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   };
   // The guess's coefficients made consistent with its zones first: Newton's method then
   // starts with the collocation rows met and moves the ends.
-  fit_nodes(c, surface.resolution);
+  fit_nodes(c, surface);
   system.relax(c);
   c = system.newton(std::move(c), working_residual, checkpoint, true).configuration;
   for (int change = 0; change <= changes; ++change) {
     if (checkpoint) checkpoint();
-    fit_nodes(c, surface.resolution);
+    fit_nodes(c, surface);
     const ZoneSystem::Result r = system.newton(c, working_residual, checkpoint);
     trace_configuration("newton at", P, r.configuration,
                         r.outcome == ZoneSystem::Outcome::converged ? "converged"

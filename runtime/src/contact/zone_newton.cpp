@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "constants.hpp"
@@ -104,17 +103,6 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     for (std::size_t i = 0; i < at.F.size(); ++i) minus_F[i] = -at.F[i];
     const double forcing = std::min(1e-2, std::max(1e-6, 0.1 * std::sqrt(result.residual)));
     const std::vector<double> step = linear_solve(at, minus_F, forcing);
-    if (std::getenv("WC_DEBUG")) {
-      // the linear model's prediction vs the residual at full step
-      const ZonePreconditioner pre(surface_, at.c, at.layout, at.external_slope, P_);
-      const double size = largest(step); const double hh = 1e-7 / size;
-      std::vector<double> Fh = residual(unpack(plus(at.X, hh, step), at.layout), at.layout, nullptr);
-      std::vector<double> lin(at.F.size()); for (std::size_t i = 0; i < lin.size(); ++i) lin[i] = at.F[i] + (Fh[i] - at.F[i]) / hh;
-      std::vector<double> full = residual(unpack(plus(at.X, 1, step), at.layout), at.layout, nullptr);
-      std::fprintf(stderr, "   |F| %.3g |F+Js| %.3g |F(x+s)| %.3g  largest step %.3g (end steps:", std::sqrt(squares(at.F)), std::sqrt(squares(lin)), std::sqrt(squares(full)), size);
-      for (auto& z : at.layout.zones) for (int e = 0; e < z.free_ends; ++e) std::fprintf(stderr, " %.3g", step[z.at + e]);
-      std::fprintf(stderr, ")\n");
-    }
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.

@@ -83,7 +83,7 @@ Configuration ZoneSystem::unpack(const std::vector<double>& X, const SystemLayou
     const double b = lz.b_free ? end_angle(X[i++] * lz.end_scale, lz.b_upper) : lz.b;
     ZoneUnknowns z{ZoneGeometry(a, b), std::vector<double>(static_cast<std::size_t>(lz.count)), lz.kink_window};
     // The solve's kink window, unless the ends moved into it: then the largest that fits.
-    if (true || !KinkCorrection::fits(surface_, z.geometry, z.kink_window)) {
+    if (!KinkCorrection::fits(surface_, z.geometry, z.kink_window)) {
       z.kink_window = KinkCorrection::radius_for(surface_, z.geometry);
     }
     for (double& v : z.d) v = X[i++] * lz.row_scale / z.geometry.h;
