@@ -137,20 +137,11 @@ struct ProfileOptions {
   bool has_roughness() const { return !H2.empty(); }
 
   // The surface of the real contact: the wave curve with every harmonic, or the user profile.
-  // The solver's work grows like n^2 and its reach ends at about fifteen clustered zones in
-  // half a period: here n <= 256 and at most 8 harmonics.
+  // The library checks the harmonics (at most max_harmonics, even n <= max_roughness_n).
   wavecontact::Surface surface() const {
     if (is_user_profile()) return wavecontact::Surface(user_profile());
     if (form != "exact") throw UsageError("--form paper applies to one zone (--a, --single-zone)");
-    const std::vector<wavecontact::Harmonic> h = harmonics();
-    if (h.size() > 8) throw UsageError("at most 8 roughness harmonics for the contact at a load");
-    for (const auto& harmonic : h) {
-      if (harmonic.n > 256) {
-        throw UsageError("--n " + std::to_string(harmonic.n) +
-                         ": the contact at a load takes n <= 256 here (the library, any n)");
-      }
-    }
-    return wavecontact::Surface(params(), h);
+    return wavecontact::Surface(params(), harmonics());
   }
 
   // P at pa/p* = 1 (pi E* H1), for the wave curve.

@@ -101,7 +101,7 @@ std::vector<Contact> solve_contact(const Surface& surface, const std::vector<dou
     for (std::size_t k = 0; k < solution.zone_count(); ++k) {
       const detail::ZoneGeometry& z = solution.zone(k);
       const double half = solution.zone_load(k);
-      const int samples = 3 * static_cast<int>(solution.configuration().zones[k].d.size()) + 8;
+      const int samples = solution.pressure_samples(k);
       const auto [p_max, x_max] = largest_pressure(solution, z.a, z.b, samples);
       const ContactZone right{z.a * to_x, z.b * to_x, half, p_max * to_p, x_max * to_x};
       c.fraction_ += (z.b - z.a) / pi;

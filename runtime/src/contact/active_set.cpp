@@ -161,6 +161,9 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         std::fprintf(stderr, "wavecontact trace: verified: %zu tension%s, %zu penetration%s (lowest gap %.3g at %.6g)\n",
                      v.tensions.size(), v.tensions.size() == 1 ? "" : "s", v.penetrations.size(),
                      v.penetrations.size() == 1 ? "" : "s", v.lowest_gap, v.x_of_lowest_gap);
+        for (const Tension& t : v.tensions) {
+          std::fprintf(stderr, "wavecontact trace:   tension %.3g at %.9g in zone %zu\n", t.pressure, t.x, t.zone);
+        }
       }
       if (v.tensions.empty() && v.penetrations.empty()) return {std::move(c), {}};
       cut_zones(c, v.tensions);

@@ -25,7 +25,7 @@ inline constexpr double working_residual = 1e-10;  // Newton's tolerance while s
 inline constexpr double gap_tolerance = 1e-9;      // of the height range
 inline constexpr double pressure_tolerance = 1e-9; // of the largest pressure
 inline constexpr int most_nodes = 4096;
-inline constexpr int most_working_nodes = 512;     // while settling, the zones are what matters
+inline constexpr int most_working_nodes = 4096;    // while settling, the zones are what matters
 
 // The part of a zone's coefficients the last three hold: how far its series is from converged.
 double coefficient_tail(const std::vector<double>& d);

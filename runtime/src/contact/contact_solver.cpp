@@ -111,12 +111,18 @@ Configuration ContactSolver::settle_at(double P, const Configuration* previous) 
     if (!s.contact) failures += std::string(failures.empty() ? "" : "; ") + "from " + from + ": " + s.failure;
     return std::move(s.contact);
   };
+  // A waviness alone has few zones, and in a sweep the previous load's are nearly this one's;
+  // with roughness, the grid's seed sees the zones that open between loads.
+  const bool few_zones = surface_->resolution >= pi / max_single_zone_harmonic;
+  if (previous && few_zones) {
+    if (std::optional<Configuration> c = attempt("the previous load's contact", *previous)) return std::move(*c);
+  }
   if (std::optional<Configuration> c = single_zone(P)) return std::move(*c);
   const int cells = seed_cells(*surface_);
   if (std::optional<Configuration> c = attempt("the grid's contact", grid_seed(*surface_, P, cells, working_nodes))) {
     return std::move(*c);
   }
-  if (previous) {
+  if (previous && !few_zones) {
     if (std::optional<Configuration> c = attempt("the previous load's contact", *previous)) return std::move(*c);
   }
   if (std::optional<Configuration> c = attempt("a finer grid's contact", grid_seed(*surface_, P, 2 * cells, working_nodes))) {

@@ -19,7 +19,7 @@ namespace {
 // series of (1 - v)^-K), zero to order K at |u| = 1, a polynomial of degree 2 (K + L - 1)
 // falling monotonically (a regularised incomplete beta function).
 constexpr int window_order = 8, window_flatness = 5;
-constexpr double least_inside = 1e-2;  // of the zone's extent in s: nearer an end, no correction
+constexpr double least_inside = 1e-4;  // of the zone's extent in s: nearer an end, no correction
 constexpr int most_piece_nodes = 257;
 
 double window(double u) {
@@ -105,7 +105,7 @@ double KinkCorrection::radius_for(const SurfaceModel& surface, const ZoneGeometr
   const Kink* kink = kink_inside(surface, zone, room);
   if (!kink) return 0;
   double r = 0.9 * kink->radius;  // few windows, each computed once
-  while (r > 0.9 * room) r *= 0.5;
+  while (r > 0.5 * room) r *= 0.5;
   return r;
 }
 

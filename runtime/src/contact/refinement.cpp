@@ -19,7 +19,7 @@ namespace wavecontact::detail {
 namespace {
 
 // How far two solutions of one topology differ: the ends (to the period) and, on each zone,
-// the pressure at 3 N + 8 points spread like Chebyshev's (to the largest pressure), short of
+// the pressure at the points that sample its extrema (to the largest pressure), short of
 // a hundredth of the zone from a free end (there the pressure goes like the root of the
 // distance to the end, whose own difference is the first term).
 std::vector<double> zone_differences(const ContactSolution& a, const ContactSolution& b, double highest) {
@@ -29,7 +29,7 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
     double worst = std::max(std::fabs(g.a - b.zone(k).a), std::fabs(g.b - b.zone(k).b)) / pi;
     const double margin = 0.01 * (g.b - g.a);
     const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
-    const int count = 3 * static_cast<int>(a.configuration().zones[k].d.size()) + 8;
+    const int count = a.pressure_samples(k);
     for (int i = 0; i <= count; ++i) {
       const double x = (lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count);
       worst = std::max(worst, std::fabs(a.pressure(x) - b.pressure(x)) / highest);

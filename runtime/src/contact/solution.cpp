@@ -48,6 +48,13 @@ double ContactSolution::gap(double x) const {
   return 2 / surface_->E * (potential(x) - configuration_.C) - surface_->depth(x);
 }
 
+int ContactSolution::pressure_samples(std::size_t k) const {
+  const ZoneGeometry& g = zone(k);
+  const double features = 256 + 8 * std::ceil((g.b - g.a) / surface_->resolution);
+  const double nodes = static_cast<double>(configuration_.zones[k].d.size());
+  return 3 * static_cast<int>(std::min(nodes, features)) + 8;
+}
+
 double ContactSolution::zone_load(std::size_t k) const { return detail::zone_load(configuration_, fields_, k); }
 
 double ContactSolution::load() const {

@@ -30,6 +30,12 @@ class ContactSolution {
   double zone_load(std::size_t k) const;
   double load() const;  // P = 2 sum of zone_load
 
+  // How many points, spread like Chebyshev's, sample zone k's pressure for its extrema: three
+  // a node, but no more than three for each of 256 modes plus eight a half wavelength of the
+  // shortest harmonic (a zone's nodes may outnumber its features many times over, where
+  // they resolve a kink, and each point costs a sum over every node).
+  int pressure_samples(std::size_t k) const;
+
   // The total potential of the zones at x^ (off them).
   double potential(double x) const;
 
