@@ -55,10 +55,19 @@ KinkCorrection::KinkCorrection(const Kink& kink, double r) : kink_(kink), r_(r) 
   const double s0 = kink.s;
   load_ = integral([&](double t) { return density(t); }, s0 - r, s0) +
           integral([&](double t) { return density(t); }, s0, s0 + r);
-  // The potential on each piece between -1, s0 - r, s0, s0 + r and 1: interpolants at the
-  // extrema cos(pi i / n) of T_n, n doubling (each doubling reuses the values it has) until
-  // the last coefficients are below 1e-15 of the largest value.
-  std::vector<double> cuts{-1.0, std::max(-1.0, s0 - r), s0, std::min(1.0, s0 + r), 1.0};
+  // The potential on pieces between -1 and 1 graded geometrically towards s0 (where it goes
+  // like (s - s0)^2 log|s - s0|) and away from the window's edges s0 -+ r (where it is only
+  // C^8): each piece then holds a function smooth on its own scale, which a few tens of
+  // Chebyshev coefficients represent (a piece spanning the scales needed hundreds, and each
+  // node of a zone across the kink evaluates one). Interpolants at the extrema cos(pi i / n)
+  // of T_n, n doubling (each doubling reuses the values it has) until the last coefficients
+  // are below 1e-15 of the largest value.
+  std::vector<double> cuts{-1.0, 1.0, s0};
+  for (double d = r; d > r * 0x1p-6; d /= 2) cuts.push_back(s0 - d), cuts.push_back(s0 + d);
+  for (double d = 2 * r; d < 2; d *= 2) cuts.push_back(s0 - d), cuts.push_back(s0 + d);
+  for (double& c : cuts) c = std::clamp(c, -1.0, 1.0);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     const double lo = cuts[i], hi = cuts[i + 1];
     if (!(hi > lo)) continue;
@@ -105,7 +114,7 @@ double KinkCorrection::radius_for(const SurfaceModel& surface, const ZoneGeometr
   const Kink* kink = kink_inside(surface, zone, room);
   if (!kink) return 0;
   double r = 0.9 * kink->radius;  // few windows, each computed once
-  while (r > 0.5 * room) r *= 0.5;
+  while (r > 0.9 * room) r *= 0.5;
   return r;
 }
 
@@ -147,13 +156,13 @@ double KinkCorrection::direct_potential(double s) const {
 
 double KinkCorrection::potential(double x) const {
   const double s = std::cos(x);
-  for (const Piece& p : pieces_) {
-    if (s >= p.lo && s <= p.hi) {
-      const double t = std::clamp((2 * s - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
-      return chebyshev::sum_t(p.coefficients.data(), p.coefficients.size(), t);
-    }
-  }
-  return direct_potential(s);
+  // The last piece that starts at or below s (the pieces are sorted and tile [-1, 1]).
+  const auto after = std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double v, const Piece& p) { return v < p.lo; });
+  if (after == pieces_.begin()) return direct_potential(s);
+  const Piece& p = *(after - 1);
+  if (!(s <= p.hi)) return direct_potential(s);
+  const double t = std::clamp((2 * s - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
+  return chebyshev::sum_t(p.coefficients.data(), p.coefficients.size(), t);
 }
 
 }  // namespace wavecontact::detail
