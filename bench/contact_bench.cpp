@@ -67,3 +67,77 @@ BENCHMARK(BM_contact_bem_oracle)->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace
+
+// The six many-zone cases of tests/contact_many_zones_test.cpp, side by side with the
+// boundary-element method (Polonsky-Keer CG on an FFT grid) on the coarsest grid 2^k whose
+// contact fraction lies within 1e-4 of the finest's (2^18 points), chosen before the timing.
+// Counters: zones, the solver's error estimate, the grid and the grid's p(0) error against
+// the solver (normalised p^).
+namespace many_zones {
+
+using namespace wavecontact;
+
+struct Case {
+  const char* name;
+  double m;
+  std::vector<Harmonic> harmonics;
+  double P;  // per period; the same number in the oracle's normalised units
+};
+
+const std::vector<Case>& cases() {
+  static const std::vector<Case> all{
+      {"four scales to n = 256, P = 1", 0, {{0.1, 4}, {0.05, 16}, {0.025, 64}, {0.0125, 256}}, 1.0},
+      {"four scales to n = 256, P = 2", 0, {{0.1, 4}, {0.05, 16}, {0.025, 64}, {0.0125, 256}}, 2.0},
+      {"m = 10, n = 128, pa/p* = 1", 10, {{0.03, 128}}, pi},
+      {"m = 10, n = 128, pa/p* = 2", 10, {{0.03, 128}}, 2 * pi},
+      {"n = 256, H2 = 0.15, pa/p* = 0.2", 0, {{0.15, 256}}, 0.2 * pi},
+      {"n = 1024, H2 = 0.05, pa/p* = 4", 0, {{0.05, 1024}}, 4 * pi},
+  };
+  return all;
+}
+
+Surface surface_of(const Case& k) { return Surface(WavinessParams{1.0, 10.0, k.m, 1.0}, k.harmonics); }
+
+void BM_contact_many_zones(benchmark::State& state) {
+  const Case& k = cases()[static_cast<std::size_t>(state.range(0))];
+  const Surface surface = surface_of(k);
+  Contact c = solve_contact(surface, k.P, {1e-8, 0});
+  for (auto _ : state) {
+    c = solve_contact(surface, k.P, {1e-8, 0});
+    benchmark::DoNotOptimize(c.contact_fraction());
+  }
+  state.counters["zones"] = c.zones_per_period();
+  state.counters["error_estimate"] = c.error_estimate();
+  state.SetLabel(k.name);
+}
+BENCHMARK(BM_contact_many_zones)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);
+
+#ifdef WAVECONTACT_BEM_BASELINE
+void BM_contact_many_zones_bem(benchmark::State& state) {
+  const Case& k = cases()[static_cast<std::size_t>(state.range(0))];
+  const auto y = [&k](double x) {
+    const double c = std::cos(x);
+    double v = (k.m + 1) * c / (k.m * std::fabs(c) + 1);
+    for (const Harmonic& h : k.harmonics) v += h.H * std::cos(h.n * x);
+    return v;
+  };
+  const std::vector<double> kinks = k.m > 0 ? std::vector<double>{pi / 2} : std::vector<double>{};
+  constexpr int finest = 1 << 18;
+  const double reference = test::bem_contact(y, 1.0, k.P, finest, kinks).contact_fraction;
+  int grid = 1024;
+  while (grid < finest && std::fabs(test::bem_contact(y, 1.0, k.P, grid, kinks).contact_fraction - reference) > 1e-4) grid *= 2;
+  test::BemContact b{};
+  for (auto _ : state) {
+    b = test::bem_contact(y, 1.0, k.P, grid, kinks);
+    benchmark::ClobberMemory();
+  }
+  const Contact c = solve_contact(surface_of(k), k.P, {1e-8, 0});
+  state.counters["grid"] = grid;
+  state.counters["p0_error"] = std::fabs(b.p0 - c.pressure(0) * 10 / pi) / b.p0;
+  state.counters["fraction_error"] = std::fabs(b.contact_fraction - c.contact_fraction());
+  state.SetLabel(k.name);
+}
+BENCHMARK(BM_contact_many_zones_bem)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+#endif
+
+}  // namespace many_zones
