@@ -25,8 +25,9 @@ std::string rows_of_block(int block, int rows);
 // The seed's two-scale parameters of Figs. 7 and 8: H1 = 1 mm, H2 = 0.15 mm, b1 = 10 mm.
 inline constexpr double two_scale_H2 = 0.15;
 
-// The contact of the two-scale profile (n = 8, 16; m = 0, 10) over a sweep of loads
-// pa/p* up to 1.2, shared by Fig. 7, fig10 and REPORT.md.
+// The contact of the two-scale profile (the seed's H2, each n of ns; m = 0, 10) over a sweep
+// of `count` loads pa/p* up to `top`, denser at small loads: n = 8, 16 to 1.2 are shared by
+// Fig. 7, fig10 and REPORT.md; fig10 adds n = 64, 256 to 2.
 struct TwoScaleSweep {
   int n;
   double m;
@@ -34,7 +35,7 @@ struct TwoScaleSweep {
   std::vector<Contact> contacts;
 };
 using TwoScaleSweeps = std::vector<TwoScaleSweep>;
-TwoScaleSweeps two_scale_sweeps();
+TwoScaleSweeps two_scale_sweeps(const std::vector<int>& ns, double top, int count);
 
 // DIR/REPORT.md: the printed formulas against the exact ones, the single zone against the
 // contact, the snap-through, the figures.

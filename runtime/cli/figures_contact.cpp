@@ -3,6 +3,7 @@
 // fraction and zones per period against the load (fig10), the pressure at a multi-zone
 // load (fig11).
 #include <cmath>
+#include <future>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -43,15 +44,22 @@ std::vector<double> sweep_ratios(double top, int count) {
 
 }  // namespace
 
-TwoScaleSweeps two_scale_sweeps() {
-  TwoScaleSweeps sweeps;
-  for (const auto& [n, m] : std::vector<std::pair<int, double>>{{8, 0}, {8, 10}, {16, 0}, {16, 10}}) {
-    TwoScaleSweep s{n, m, sweep_ratios(1.2, 60), {}};
-    std::vector<double> loads;
-    for (double r : s.ratios) loads.push_back(r * pi * E * H1);
-    s.contacts = solve_contact(Surface(TwoScaleParams{{H1, b1, m, E}, {two_scale_H2, n}}), loads);
-    sweeps.push_back(std::move(s));
+TwoScaleSweeps two_scale_sweeps(const std::vector<int>& ns, double top, int count) {
+  // Each sweep on its own thread: they are independent, and the slowest (n = 256) sets the time.
+  std::vector<std::future<TwoScaleSweep>> pending;
+  for (int n : ns) {
+    for (double m : {0.0, 10.0}) {
+      pending.push_back(std::async(std::launch::async, [=] {
+        TwoScaleSweep s{n, m, sweep_ratios(top, count), {}};
+        std::vector<double> loads;
+        for (double r : s.ratios) loads.push_back(r * pi * E * H1);
+        s.contacts = solve_contact(Surface(TwoScaleParams{{H1, b1, m, E}, {two_scale_H2, n}}), loads);
+        return s;
+      }));
+    }
   }
+  TwoScaleSweeps sweeps;
+  for (std::future<TwoScaleSweep>& s : pending) sweeps.push_back(s.get());
   return sweeps;
 }
 
@@ -146,10 +154,14 @@ Figure centre_pressure(const TwoScaleSweeps& sweeps) {
 }
 
 // fig10: the contact fraction and the zones per period against pa/p*, the seed's two-scale
-// parameters.
-Figure contact_fraction_and_zones(const TwoScaleSweeps& sweeps) {
+// parameters, from the shared sweeps (n = 8, 16) and sweeps to pa/p* = 2 at n = 64 and 256.
+Figure contact_fraction_and_zones(const TwoScaleSweeps& shared) {
+  TwoScaleSweeps sweeps = shared;
+  for (TwoScaleSweep& s : two_scale_sweeps({64, 256}, 2.0, 8)) sweeps.push_back(std::move(s));
   std::ostringstream csv;
   csv << "n,m,pa_over_pstar,contact_fraction,zones,p0,max_p,error_estimate\n";
+  std::vector<std::string> rows;  // each sweep's rows of the CSV, for gnuplot's `every`
+  std::size_t first = 0;
   for (const TwoScaleSweep& s : sweeps) {
     for (std::size_t i = 0; i < s.contacts.size(); ++i) {
       const Contact& c = s.contacts[i];
@@ -157,20 +169,21 @@ Figure contact_fraction_and_zones(const TwoScaleSweeps& sweeps) {
           << c.zones_per_period() << "," << number(c.pressure(0)) << "," << number(c.max_pressure()) << ","
           << number(c.error_estimate()) << "\n";
     }
+    rows.push_back(" every ::" + std::to_string(first) + "::" + std::to_string(first + s.contacts.size() - 1));
+    first += s.contacts.size();
   }
-  const int samples = static_cast<int>(sweeps.front().contacts.size());
   std::string script =
       "set multiplot layout 1,2 title 'fig10: the contact of the two-scale profile, H1 = 1 mm, H2 = 0.15 mm, "
-      "b1 = 10 mm'\nset xlabel 'pa / p*'\nset key top left font ',8'\n";
+      "b1 = 10 mm'\nset xlabel 'pa / p*'\nset key top left font ',8'\nset xrange [0:2]\n";
   for (int panel = 0; panel < 2; ++panel) {
     std::vector<std::string> curves;
     for (std::size_t k = 0; k < sweeps.size(); ++k) {
       const std::string title = "n = " + std::to_string(sweeps[k].n) + ", m = " + number(sweeps[k].m);
-      curves.push_back(lines_of("fig10.csv", rows_of_block(static_cast<int>(k), samples),
-                                panel == 0 ? "3:4" : "3:5", static_cast<int>(k + 1), 2, 1, title));
+      curves.push_back(lines_of("fig10.csv", rows[k], panel == 0 ? "3:4" : "3:5", static_cast<int>(k + 1), 2,
+                                sweeps[k].m == 0 ? 1 : 2, title));
     }
     script += panel == 0 ? "set title 'contact fraction'\nset ylabel 'contact length / period'\n"
-                         : "set title 'zones per period'\nset ylabel 'zones'\n";
+                         : "set title 'zones per period'\nset ylabel 'zones'\nset logscale y\n";
     script += plot(curves);
   }
   return {"fig10", "fig10: contact fraction and zones per period against pa/p*, the seed's two-scale parameters",

@@ -10,6 +10,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <future>
 #include <string>
 #include <vector>
 
@@ -89,20 +91,28 @@ void reproduce(const std::string& out_dir, const std::vector<std::string>& only,
   if (error || !fs::is_directory(dir)) {
     throw OutputError("cannot create --out " + out_dir + (error ? ": " + error.message() : ": not a directory"));
   }
+  // The figures are independent: each is computed on its own thread (the two-scale sweeps,
+  // which fig7, fig10 and the report share, on one more), then written in order.
   const bool need_sweeps = wanted("fig7") || wanted("fig10");
-  const TwoScaleSweeps sweeps = need_sweeps ? two_scale_sweeps() : TwoScaleSweeps{};
+  const std::shared_future<TwoScaleSweeps> sweeps =
+      std::async(std::launch::async, [need_sweeps] { return need_sweeps ? two_scale_sweeps({8, 16}, 1.2, 60) : TwoScaleSweeps{}; });
+  std::vector<std::future<Figure>> pending;
+  const auto compute = [&](const char* name, std::function<Figure()> build) {
+    if (wanted(name)) pending.push_back(std::async(std::launch::async, std::move(build)));
+  };
+  compute("fig1", wave_curves);
+  compute("fig2", two_scale_profiles);
+  compute("fig4", roughness_integrand);
+  compute("fig5a", single_asperity_pressure);
+  compute("fig5b", periodic_pressure);
+  compute("fig6", contact_length);
+  compute("fig7", [sweeps] { return centre_pressure(sweeps.get()); });
+  compute("fig8", two_scale_contact_area);
+  compute("fig9", shape_design);
+  compute("fig10", [sweeps] { return contact_fraction_and_zones(sweeps.get()); });
+  compute("fig11", multi_zone_pressure);
   std::vector<Figure> figures;
-  if (wanted("fig1")) figures.push_back(wave_curves());
-  if (wanted("fig2")) figures.push_back(two_scale_profiles());
-  if (wanted("fig4")) figures.push_back(roughness_integrand());
-  if (wanted("fig5a")) figures.push_back(single_asperity_pressure());
-  if (wanted("fig5b")) figures.push_back(periodic_pressure());
-  if (wanted("fig6")) figures.push_back(contact_length());
-  if (wanted("fig7")) figures.push_back(centre_pressure(sweeps));
-  if (wanted("fig8")) figures.push_back(two_scale_contact_area());
-  if (wanted("fig9")) figures.push_back(shape_design());
-  if (wanted("fig10")) figures.push_back(contact_fraction_and_zones(sweeps));
-  if (wanted("fig11")) figures.push_back(multi_zone_pressure());
+  for (std::future<Figure>& f : pending) figures.push_back(f.get());
   for (const Figure& figure : figures) {
     write(dir / (figure.name + ".csv"), figure.csv);
     write(dir / (figure.name + ".gp"),
@@ -114,7 +124,7 @@ void reproduce(const std::string& out_dir, const std::vector<std::string>& only,
     log << "wrote " << (dir / (figure.name + ".png")).string() << "\n";
   }
   if (!only.empty()) return;  // the report reads every figure
-  write(dir / "REPORT.md", discrepancy_report(figures, sweeps));
+  write(dir / "REPORT.md", discrepancy_report(figures, sweeps.get()));
   log << "wrote " << (dir / "REPORT.md").string() << "\n";
 }
 

@@ -1,4 +1,4 @@
-// The work budget of one solve: a deadline, and the caller's checkpoint (which may throw to
+// The work budget of one solve (of one load): a deadline, and the caller's checkpoint (which may throw to
 // abandon the solve: the Python module raises KeyboardInterrupt from it on Ctrl-C).
 #pragma once
 
@@ -17,6 +17,8 @@ class WorkBudget {
       : start_(Clock::now()), seconds_(max_seconds), checkpoint_(std::move(checkpoint)) {}
 
   double elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  // The budget afresh, for the next piece of work (each load of a sweep has its own).
+  void restart() const { start_ = Clock::now(); }
 
   // At a safe point: throws BeyondReach, naming `where` (how far the work got), once the
   // time is spent; runs the checkpoint every tenth of a second.
@@ -36,7 +38,7 @@ class WorkBudget {
 
  private:
   using Clock = std::chrono::steady_clock;
-  Clock::time_point start_;
+  mutable Clock::time_point start_;
   mutable Clock::time_point last_checkpoint_{};
   double seconds_;
   std::function<void()> checkpoint_;

@@ -90,8 +90,9 @@ struct SolverOptions {
   // the tolerance (the estimate is against a solve on a quarter more); 4 <= nodes_per_zone
   // <= 4096 fixes them.
   int nodes_per_zone = 0;
-  // The work budget: a solve that has not met the tolerance after this many seconds stops
-  // with wavecontact::BeyondReach (errors.hpp), saying how far it got; 0 < max_seconds.
+  // The work budget of each load: a solve that has not met the tolerance after this many
+  // seconds on one load stops with wavecontact::BeyondReach (errors.hpp), saying how far it
+  // got; 0 < max_seconds.
   double max_seconds = 60;
   // Called at safe points, about every tenth of a second; may throw to abandon the solve
   // (the exception propagates out of solve_contact).

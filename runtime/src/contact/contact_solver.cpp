@@ -140,6 +140,7 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
   for (std::size_t index : order) {
     const double P = loads[index];
     target_load_ = P;
+    budget_.restart();
     if (P >= onset_) {
       solved[index] = full_contact(P);
       continue;
