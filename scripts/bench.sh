@@ -66,11 +66,15 @@ for label, measure, ours_name, baselines in rows:
             continue
         print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
 # The many-zone contacts beside boundary elements: time, zones, accuracy of each.
+def named(prefix):  # a benchmark's name with its suffixes (/iterations:1/repeats:3)
+    return next((name for name in results if name == prefix or name.startswith(prefix + "/")), None)
+
 for i in range(6):
-    ours, bem = results.get(f"BM_contact_many_zones/{i}"), results.get(f"BM_contact_many_zones_bem/{i}")
-    if ours is None or bem is None:
+    ours_name, bem_name = named(f"BM_contact_many_zones/{i}"), named(f"BM_contact_many_zones_bem/{i}")
+    if ours_name is None or bem_name is None:
         continue
-    t_ours, t_bem = time_ns(f"BM_contact_many_zones/{i}") / 1e6, time_ns(f"BM_contact_many_zones_bem/{i}") / 1e6
+    ours, bem = results[ours_name], results[bem_name]
+    t_ours, t_bem = time_ns(ours_name) / 1e6, time_ns(bem_name) / 1e6
     print(f"{ours.get('label', '')[:40]:40} {t_ours:10.4g} ms, {int(ours['zones'])} zones, estimate "
           f"{ours['error_estimate']:.1e} | BEM {int(bem['grid'])} points {t_bem:10.4g} ms, p(0) off by "
           f"{bem['p0_error']:.1e}, fraction off by {bem['fraction_error']:.1e} | {t_bem / t_ours:5.1f}x")
