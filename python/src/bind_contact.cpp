@@ -104,7 +104,7 @@ void bind_contact(py::module_& m) {
       "surface"_a, "P"_a, "tolerance"_a = 1e-10, "nodes_per_zone"_a = 0, "max_seconds"_a = 60.0,
       "The contact carrying the load P > 0 per period: a Contact for a float, a list of them for "
       "a sequence or array of loads (one continuation through them). tolerance: the relative error "
-      "estimate to meet; nodes_per_zone > 0 fixes the Chebyshev nodes of every zone; max_seconds: the work budget, "
+      "estimate to meet; nodes_per_zone > 0 fixes the Chebyshev nodes of every zone; max_seconds: the work budget of each load, "
       "beyond which BeyondReach is raised. Ctrl-C interrupts it within a second.");
   m.def("full_contact_load", &full_contact_load, "surface"_a, "The load from which the contact is full.");
 

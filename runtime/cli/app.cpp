@@ -197,7 +197,7 @@ struct ZoneOptions {
                     "relative error the contact must meet, 1e-14 to 1e-2 (missed: exit 4)")
         ->capture_default_str();
     app->add_option("--max-seconds", max_seconds,
-                    "work budget of the solve, 0 < s <= 1e6: beyond it, exit 4 saying how far it got")
+                    "work budget of each load, 0 < s <= 1e6: beyond it, exit 4 saying how far it got")
         ->capture_default_str();
   }
 
