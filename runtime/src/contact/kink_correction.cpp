@@ -51,7 +51,7 @@ struct KinkWindows {
 
 std::shared_ptr<KinkWindows> make_kink_windows() { return std::make_shared<KinkWindows>(); }
 
-KinkCorrection::KinkCorrection(const Kink& kink, double r) : kink_(kink), r_(r) {
+KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_jump_(kink.slope_jump), r_(r) {
   const double s0 = kink.s;
   load_ = integral([&](double t) { return density(t); }, s0 - r, s0) +
           integral([&](double t) { return density(t); }, s0, s0 + r);
@@ -138,16 +138,16 @@ std::shared_ptr<const KinkCorrection> KinkCorrection::of(const SurfaceModel& sur
 }
 
 double KinkCorrection::density(double t) const {
-  const double u = (t - kink_.s) / r_;
-  if (!(std::fabs(u) < 1) || t == kink_.s) return 0;
-  return -kink_.slope_jump(t) * std::log(std::fabs(t - kink_.s)) * window(u) / pi;
+  const double u = (t - s0_) / r_;
+  if (!(std::fabs(u) < 1) || t == s0_) return 0;
+  return -slope_jump_(t) * std::log(std::fabs(t - s0_)) * window(u) / pi;
 }
 
 double KinkCorrection::direct_potential(double s) const {
-  const double lo = kink_.s - r_, hi = kink_.s + r_;
+  const double lo = s0_ - r_, hi = s0_ + r_;
   const auto f = [&](double t) { return t == s ? 0.0 : density(t) * std::log(std::fabs(s - t)); };
-  std::vector<double> cuts{lo, kink_.s, hi};
-  if (s > lo && s < hi && s != kink_.s) cuts.push_back(s);
+  std::vector<double> cuts{lo, s0_, hi};
+  if (s > lo && s < hi && s != s0_) cuts.push_back(s);
   std::sort(cuts.begin(), cuts.end());
   double sum = 0;
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) sum += integral(f, cuts[i], cuts[i + 1]);

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -52,7 +53,9 @@ class KinkCorrection {
     std::vector<double> coefficients;  // of the potential in t = (2 s - lo - hi)/(hi - lo)
   };
   double direct_potential(double s) const;
-  Kink kink_;
+  // The kink's position and slope jump, not the Kink itself: its windows hold this object.
+  double s0_;
+  std::function<double(double)> slope_jump_;
   double r_;
   std::vector<Piece> pieces_;
   double load_ = 0;
