@@ -6,20 +6,23 @@
 # 2. Killed (SIGKILL) at moments spread over a full run, it leaves each file it writes whole
 #    (old or new), the user's files untouched, and the next run completes the update.
 set -euo pipefail
-derive=$1 committed=$2 work=$3
+committed=$2 work=$3
+# A known job, not a test of the budget: under the sanitizers and beside other tests, a full
+# run outlasts the default --max-seconds of 60.
+derive=("$1" --max-seconds 3600)
 rm -rf "$work"
 mkdir -p "$work"
 
 start=$(date +%s.%N)
-LC_ALL=C "$derive" --out "$work/a"
+LC_ALL=C "${derive[@]}" --out "$work/a"
 duration=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { print e - s }')
 # The second run with the environment grown by some kB and malloc's fill changed, which moves the
 # addresses GiNaC's ordering of terms depends on (a sign or an order taken from it shows here).
 WAVECONTACT_TEST_PADDING=$(head -c 5003 /dev/zero | tr '\0' x) MALLOC_PERTURB_=91 \
-  LC_ALL=C.UTF-8 LANG=de_DE.UTF-8 LC_NUMERIC=de_DE.UTF-8 "$derive" --out "$work/b"
+  LC_ALL=C.UTF-8 LANG=de_DE.UTF-8 LC_NUMERIC=de_DE.UTF-8 "${derive[@]}" --out "$work/b"
 diff -r "$work/a" "$work/b"
-"$derive" --n 4 --n 96 --out "$work/c"
-"$derive" --n 96 --n 4 --out "$work/d"
+"${derive[@]}" --n 4 --n 96 --out "$work/c"
+"${derive[@]}" --n 96 --n 4 --out "$work/d"
 diff -r "$work/c" "$work/d"
 echo "deterministic: two full runs and two --n orders agree"
 
@@ -34,7 +37,7 @@ for fraction in 0 0.5 0.9 0.97 0.99 3; do
   echo "// an older version" >> "$work/out/waviness.hpp"
   echo "user file" > "$work/out/notes.txt"
   cp -r "$work/out" "$work/before"
-  "$derive" --out "$work/out" &
+  "${derive[@]}" --out "$work/out" &
   pid=$!
   sleep "$delay"
   kill -9 "$pid" 2>/dev/null || true
@@ -59,7 +62,7 @@ for fraction in 0 0.5 0.9 0.97 0.99 3; do
     new_states=$((new_states + 1))
   fi
   # The next run completes the update and leaves nothing of the killed one.
-  "$derive" --out "$work/out"
+  "${derive[@]}" --out "$work/out"
   rm "$work/out/notes.txt"
   diff -r "$work/a" "$work/out"
 done
