@@ -156,20 +156,13 @@ SingleZoneResult check_single_zone(const std::shared_ptr<const SurfaceModel>& su
   // (E/2) y, d_0 from the condition at a^ (bounded), C from the T_0 row; the nodes grow until
   // the tail is negligible.
   const ZoneGeometry g(0, a);
-  const double half_E = surface->E / 2;
   int count = working_nodes;
   Configuration c;
   for (;;) {
     const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
-    const double x_ref = x[static_cast<std::size_t>(count / 2)];
     const double window = KinkCorrection::radius_for(*surface, g);
     const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface, g, window);
-    std::vector<double> values, G(static_cast<std::size_t>(count));
-    for (double xi : x) {
-      values.push_back(half_E * surface->height_difference(xi, x_ref) - (kink ? kink->potential(xi) : 0.0));
-    }
-    chebyshev::coefficients(values.data(), count, G.data());
-    G[0] += half_E * surface->depth(x_ref);
+    const std::vector<double> G = right_hand_side(*surface, x, {}, kink.get());
     ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count)), window};
     double alternating = 0, magnitude = 0;
     for (int j = 1; j < count; ++j) {

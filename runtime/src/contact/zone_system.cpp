@@ -118,10 +118,23 @@ double zone_load(const Configuration& c, const ZoneFields& fields, std::size_t k
   return fields.kinks[k] ? smooth + fields.kinks[k]->load() : smooth;
 }
 
+std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vector<double>& x,
+                                    const FieldTree::Batch& others, const KinkCorrection* kink) {
+  const std::size_t M = x.size();
+  const double half_E = surface.E / 2, x_ref = x[M / 2];
+  std::vector<double> values(M), G(M);
+  for (std::size_t u = 0; u < M; ++u) {
+    values[u] = half_E * surface.height_difference(x[u], x_ref) - (others.difference.empty() ? 0.0 : others.difference[u]) -
+                (kink ? kink->potential(x[u]) : 0.0);
+  }
+  chebyshev::coefficients(values.data(), static_cast<int>(M), G.data());
+  G[0] += half_E * surface.depth(x_ref) - others.at_reference;
+  return G;
+}
+
 std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLayout& L,
                                          std::vector<std::vector<double>>* external_slope) const {
   std::vector<double> F(L.size, 0.0);
-  const double half_E = surface_.E / 2;
   const ZoneFields fields(surface_, c);
   if (external_slope) external_slope->assign(c.zones.size(), {});
   double load = 0;
@@ -130,22 +143,10 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
     const SystemLayout::Zone& lz = L.zones[k];
     const int M = lz.count;
     const std::vector<double> x = node_angles(zk.geometry, M);
-    // (E/2) (y - y_top) + C - the others' potential at the nodes, as differences from a
-    // reference node (each formed without cancellation: they hold the zone's equations at
-    // full precision where the sums are large and their variation small), with the constant
-    // part (E/2) (y(x_ref) - y_top) + C - the others' potential there in the T_0 coefficient.
-    const double x_ref = x[static_cast<std::size_t>(M / 2)];
-    std::vector<double> values(static_cast<std::size_t>(M));
-    FieldTree::Batch others = fields.evaluate(k, x, x_ref, external_slope != nullptr);
-    for (int i = 0; i < M; ++i) {
-      const std::size_t u = static_cast<std::size_t>(i);
-      values[u] = half_E * surface_.height_difference(x[u], x_ref) - others.difference[u] -
-                  (fields.kinks[k] ? fields.kinks[k]->potential(x[u]) : 0.0);
-    }
+    FieldTree::Batch others = fields.evaluate(k, x, x[static_cast<std::size_t>(M / 2)], external_slope != nullptr);
+    std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get()), own(static_cast<std::size_t>(M));
+    G[0] += c.C;
     if (external_slope) (*external_slope)[k] = std::move(others.slope);
-    std::vector<double> G(static_cast<std::size_t>(M)), own(static_cast<std::size_t>(M));
-    chebyshev::coefficients(values.data(), M, G.data());
-    G[0] += half_E * surface_.depth(x_ref) + c.C - others.at_reference;
     own_potential(zk.geometry, zk.d.data(), M, own.data());
     std::size_t row = lz.at;
     // Row j >= 1 times j: in units of the coefficient it fixes (own_j = h d_j / j), so that
@@ -175,7 +176,6 @@ std::vector<double> ZoneSystem::residuals(const Configuration& c) const { return
 void ZoneSystem::relax(Configuration& c) const {
   // Each zone's coefficients from its collocation rows with the others' field as it is:
   // d_j = j G_j / h (j >= 1), d_0 = (G_0 + C) / (h log(2/h)), and C such that they carry P.
-  const double half_E = surface_.E / 2;
   const ZoneFields fields(surface_, c);
   std::vector<std::vector<double>> next;
   double kink_load = 0, load_of_C = 0, load_without_C = 0;
@@ -183,16 +183,8 @@ void ZoneSystem::relax(Configuration& c) const {
     const ZoneUnknowns& zk = c.zones[k];
     const int M = static_cast<int>(zk.d.size());
     const std::vector<double> x = node_angles(zk.geometry, M);
-    const double x_ref = x[static_cast<std::size_t>(M / 2)];
-    std::vector<double> values(static_cast<std::size_t>(M)), G(static_cast<std::size_t>(M));
-    const FieldTree::Batch others = fields.evaluate(k, x, x_ref, false);
-    for (int i = 0; i < M; ++i) {
-      const std::size_t u = static_cast<std::size_t>(i);
-      values[u] = half_E * surface_.height_difference(x[u], x_ref) - others.difference[u] -
-                  (fields.kinks[k] ? fields.kinks[k]->potential(x[u]) : 0.0);
-    }
-    chebyshev::coefficients(values.data(), M, G.data());
-    G[0] += half_E * surface_.depth(x_ref) - others.at_reference;
+    const FieldTree::Batch others = fields.evaluate(k, x, x[static_cast<std::size_t>(M / 2)], false);
+    const std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get());
     std::vector<double> d(static_cast<std::size_t>(M));
     const double lambda = self_logarithm(zk.geometry);
     d[0] = G[0] / (zk.geometry.h * lambda);

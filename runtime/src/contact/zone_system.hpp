@@ -62,6 +62,14 @@ struct ZoneFields {
   double potential(double x, std::size_t skip) const;
 };
 
+// The Chebyshev coefficients G_j of a zone's right-hand side at its nodes x (angles):
+// (E/2)(y - y_top) less the other zones' potential `others` (a batch at x with the reference
+// x[M/2]; empty: none) and the zone's own kink correction's. Formed as differences from the
+// reference node, each without cancellation (the zone's equations keep their digits where
+// the sums are large and their variation small), the constant part in G_0; C not included.
+std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vector<double>& x,
+                                    const FieldTree::Batch& others, const KinkCorrection* kink);
+
 // The load of zone k over its part of [0, pi]: pi h d_0, plus its kink correction's.
 double zone_load(const Configuration& c, const ZoneFields& fields, std::size_t k);
 
