@@ -233,6 +233,20 @@ BOOST_AUTO_TEST_CASE(snap_through_goes_to_two_zones_then_full_contact) {
   }
 }
 
+// The top zone of m = 10 ends just beyond the kink at x = b1/2 for pa/p* near 2.855: at P =
+// 8.97 and 8.98 the kink is 3e-5 and 5e-5 inside the zone (in x^ = pi x / b1). A sliver that
+// thin once went uncorrected, and the refined contact penetrated by 1e-7 of the height range.
+BOOST_AUTO_TEST_CASE(zone_ending_just_beyond_the_kink) {
+  const std::vector<Contact> sweep = solve_contact(Surface(WavinessParams{1, 10, 10, 1}), {8.97, 8.98}, {1e-8});
+  for (const Contact& c : sweep) {
+    BOOST_TEST(c.zones_per_period() == 2);
+    BOOST_TEST(c.zones().front().x_end > 5.0);
+    BOOST_TEST(c.zones().front().x_end < 5.0 + 1e-3);
+    BOOST_TEST(c.error_estimate() <= 1e-8);
+    check_contact(c, 10, "m = 10 at P = " + std::to_string(c.load()));
+  }
+}
+
 BOOST_AUTO_TEST_CASE(sweep_equals_single_solves) {
   const Surface s(fig7(0, 0.15, 8));
   const std::vector<double> loads{0.6 * pi, 0.05 * pi, 0.2 * pi};

@@ -19,8 +19,11 @@ namespace {
 // series of (1 - v)^-K), zero to order K at |u| = 1, a polynomial of degree 2 (K + L - 1)
 // falling monotonically (a regularised incomplete beta function).
 constexpr int window_order = 8, window_flatness = 5;
-constexpr double least_inside = 1e-4;  // of the zone's extent in s: nearer an end, no correction
+constexpr double least_inside = 1e-6;  // of the zone's extent in s: nearer an end, its effect is below rounding
 constexpr int most_piece_nodes = 257;
+// Beyond twice the radius from the kink, the potential is its expansion in the moments of the
+// window, (r / (s - s0))^k / k falling at least like 2^-k: 56 terms reach 1e-17.
+constexpr int multipole_terms = 56;
 
 double window(double u) {
   if (!(std::fabs(u) < 1)) return 0;
@@ -53,8 +56,12 @@ std::shared_ptr<KinkWindows> make_kink_windows() { return std::make_shared<KinkW
 
 KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_jump_(kink.slope_jump), r_(r) {
   const double s0 = kink.s;
-  load_ = integral([&](double t) { return density(t); }, s0 - r, s0) +
-          integral([&](double t) { return density(t); }, s0, s0 + r);
+  // nu_k = Int q_k(t) ((t - s0) / r)^k dt, the moments of the far field.
+  for (int k = 0; k <= multipole_terms; ++k) {
+    const auto moment = [&](double t) { return density(t) * std::pow((t - s0) / r, k); };
+    moments_.push_back(integral(moment, s0 - r, s0) + integral(moment, s0, s0 + r));
+  }
+  load_ = moments_[0];
   // The potential on pieces between -1 and 1 graded geometrically towards s0 (where it goes
   // like (s - s0)^2 log|s - s0|) and away from the window's edges s0 -+ r (where it is only
   // C^8): each piece then holds a function smooth on its own scale, which a few tens of
@@ -144,6 +151,13 @@ double KinkCorrection::density(double t) const {
 }
 
 double KinkCorrection::direct_potential(double s) const {
+  // Far: log|s - t| = log|s - s0| - sum_k ((t - s0) / (s - s0))^k / k.
+  if (std::fabs(s - s0_) >= 2 * r_) {
+    const double ratio = r_ / (s - s0_);
+    double sum = moments_[0] * std::log(std::fabs(s - s0_)), power = 1;
+    for (int k = 1; k <= multipole_terms; ++k) power *= ratio, sum -= moments_[static_cast<std::size_t>(k)] * power / k;
+    return -sum / pi;
+  }
   const double lo = s0_ - r_, hi = s0_ + r_;
   const auto f = [&](double t) { return t == s ? 0.0 : density(t) * std::log(std::fabs(s - t)); };
   std::vector<double> cuts{lo, s0_, hi};

@@ -8,10 +8,12 @@
 // W a polynomial of degree 24, 1 - O(u^10) at 0 and zero to order 8 at |u| = 1 (gentle: a
 // steep window would need as many nodes as the singularity it removes), r within the zone and
 // within the branches' analyticity. Its potential is smooth on either side of s0 and of the
-// window's edges: it is computed once per window (tanh-sinh quadrature) at the Chebyshev nodes
-// of the pieces of [-1, 1] between them, and interpolated. A kink closer to an end than a
-// hundredth of the zone is left alone: the other branch holds on a sliver there (a window
-// that narrow would need thousands of nodes), and the error estimate sees it.
+// window's edges: it is computed once per window (tanh-sinh quadrature near the window, its
+// moments' expansion beyond twice its radius) at the Chebyshev nodes of the pieces of [-1, 1]
+// between them, and interpolated. A kink closer to an end than a millionth of the zone is left
+// alone: the other branch holds on a sliver there, whose effect is below the rounding of the
+// contact (a window that narrow would need hundreds of thousands of nodes); nearer than a
+// ten-thousandth, the window needs up to most_nodes (active_set.hpp).
 #pragma once
 
 #include <cmath>
@@ -40,8 +42,6 @@ class KinkCorrection {
   double density(double s) const;
   // -(1/pi) Int q_k(t) log|s - t| dt at s = cos x (any x^ in [0, pi]).
   double potential(double x) const;
-  // The potential by quadrature, without the interpolation (for tests).
-  double potential_by_quadrature(double x) const { return direct_potential(std::cos(x)); }
   // Int q_k dt: its part of the zone's load.
   double load() const { return load_; }
 
@@ -58,6 +58,7 @@ class KinkCorrection {
   std::function<double(double)> slope_jump_;
   double r_;
   std::vector<Piece> pieces_;
+  std::vector<double> moments_;  // nu_k of the far field (kink_correction.cpp)
   double load_ = 0;
 };
 

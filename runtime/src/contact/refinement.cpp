@@ -9,6 +9,7 @@
 
 #include "active_set.hpp"
 #include "constants.hpp"
+#include "trace.hpp"
 #include "verification.hpp"
 #include "wavecontact/errors.hpp"
 #include "zone_field.hpp"
@@ -72,7 +73,7 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
 
 SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
                      double tolerance, int fixed_nodes, const std::function<void()>& checkpoint) {
-  // The nodes of each zone double until its pressure and ends change by less than a tenth of
+  // The nodes of each zone double until its pressure and ends change by less than half
   // the tolerance (or, fixed, are compared with half as many again); the error estimate is the
   // last change, that of the coarser solution: an upper bound while the series converge.
   const ZoneSystem system(*surface, P);
@@ -98,18 +99,37 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
     for (ZoneUnknowns& z : c.zones) z.d.resize(static_cast<std::size_t>(fixed_nodes), 0.0);
   }
   c = solve(c);
-  // A zone keeps doubling while its change is above a tenth of the tolerance and still falls
+  // A zone keeps doubling while its change is above half the tolerance and still falls
   // (by four at least: below, its rounding is reached).
   std::vector<double> difference, previous(c.zones.size(), std::numeric_limits<double>::infinity());
   std::vector<bool> converging(c.zones.size(), true);
   const double highest = verify(ContactSolution(surface, c), gap_tolerance * range, pressure_tolerance).highest_pressure;
+  // A zone already at its most nodes cannot double: its estimate is its change from half as many.
+  const auto most = [](const ZoneUnknowns& z) {
+    return static_cast<std::size_t>(z.kink_window > 0 ? most_kinked_nodes : most_nodes);
+  };
+  double capped_change = 0;
+  if (fixed_nodes == 0) {
+    Configuration coarser = c;
+    bool halved = false;
+    for (ZoneUnknowns& z : coarser.zones) {
+      if (z.d.size() >= most(z)) z.d.resize(z.d.size() / 2), halved = true;
+    }
+    if (halved) {
+      const std::vector<double> change =
+          zone_differences(ContactSolution(surface, solve(coarser)), ContactSolution(surface, c), highest);
+      for (std::size_t k = 0; k < change.size(); ++k) {
+        if (c.zones[k].d.size() >= most(c.zones[k])) capped_change = std::max(capped_change, change[k]);
+      }
+    }
+  }
   for (int round = 0; round < 10; ++round) {
     Configuration finer = c;
     bool grown = false;
     for (std::size_t k = 0; k < finer.zones.size(); ++k) {
-      const bool again = difference.empty() || (difference[k] > 0.1 * tolerance && converging[k]);
+      const bool again = difference.empty() || (difference[k] > 0.5 * tolerance && converging[k]);
       const std::size_t n = finer.zones[k].d.size();
-      const std::size_t target = fixed_nodes > 0 ? n + n / 2 : std::min<std::size_t>(most_nodes, 2 * n);
+      const std::size_t target = fixed_nodes > 0 ? n + n / 2 : std::min(most(finer.zones[k]), 2 * n);
       if (again && target > n) finer.zones[k].d.resize(target, 0.0), grown = true;
     }
     if (!grown) break;
@@ -122,12 +142,18 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
       }
     }
     difference = change;
+    if (tracing()) {
+      const double worst = *std::max_element(change.begin(), change.end());
+      std::fprintf(stderr, "wavecontact trace: refined round %d: largest change %.3g\n", round, worst);
+    }
+    trace_configuration("refinement", P, finer, "a finer contact");
     if (fixed_nodes > 0) break;
     c = std::move(finer);
   }
   auto solution = std::make_shared<const ContactSolution>(surface, c);
   const Verification v = verify(*solution, gap_tolerance * range, pressure_tolerance);
-  const double error = difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end());
+  const double error =
+      std::max(capped_change, difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end()));
   int nodes = 0;
   for (const ZoneUnknowns& z : c.zones) nodes = std::max(nodes, static_cast<int>(z.d.size()));
   const double rounding = rounding_estimate(surface, system, c, highest);
