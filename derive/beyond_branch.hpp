@@ -16,7 +16,7 @@ namespace wavecontact::derive {
 struct BeyondBranch {
   GiNaC::ex beta;                 // v = tan(x^/2) at the change of branch
   GiNaC::ex top_g, flank_g;       // eq. 11 of each branch, rational in sym::v()
-  // The load (eq. 6 by MATH.md fact 7, load_integrand) for beta < alpha: in v-variables and
+  // The load (eq. 6 by docs/mathematics.md fact 7, load_integrand) for beta < alpha: in v-variables and
   // in angle atoms.
   std::vector<MomentTerm> load_v, load_angle;
   // As the zone's edge comes down to the branch the top piece [0, beta] is nearly the whole

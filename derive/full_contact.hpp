@@ -1,4 +1,4 @@
-// Full contact (a = b1, MATH.md fact 11) in closed form: p = pa + p_fc, where for
+// Full contact (a = b1, docs/mathematics.md fact 11) in closed form: p = pa + p_fc, where for
 // y = sum_k y_k cos(k x^)
 //   p_fc(x) = (E*/2)(pi/b1) sum_k k y_k cos(k x^) = (E*/2)(pi/b1) d(y~)/dx^,
 // y~ the conjugate function of y. Under v = tan(x^/2) (eq. 4) the conjugate function is the

@@ -2,7 +2,7 @@
 //
 // Every pole t = tau of an integrand (in t = v^2) contributes the radical
 //   kappa(tau) = sqrt(1 - alpha^2/tau),
-// real and positive whenever tau lies off [0, alpha^2] (MATH.md section 2). Closed forms
+// real and positive whenever tau lies off [0, alpha^2] (docs/mathematics.md section 2). Closed forms
 // are kept as sums over square-free products of these radicals with rational
 // coefficients, so that kappa^2 is always reduced and cancellations happen in normal().
 #pragma once

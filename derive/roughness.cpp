@@ -193,7 +193,7 @@ EmittedFunction roughness_load_program(int n) {
   }
   return {program_name(n, "load"),
           "Load of the roughness harmonic, n = " + std::to_string(n) +
-              ": (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).",
+              ": (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).",
           {sym::E(), sym::H2(), sym::Ca(), sym::Sa()},
           GiNaC::Pi / 2 * sym::E() * sym::H2() * n * D,
           statements};

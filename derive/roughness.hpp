@@ -9,7 +9,7 @@
 // Dirichlet kernel sin(n phi)/sin(phi) and applying Mehler-Dirichlet,
 // P_k(cos a^) = (sqrt2/pi) Int_0^a^ cos((k+1/2) theta)/sqrt(cos theta - cos a^) dtheta:
 //   p^_r(x^) = (E* H2 n / sqrt2) sqrt(cos x^ - cos a^) sum_{j=0}^{n-1} P_{n-1-j}(cos a^) cos((j+1/2) x^),
-//   P_r = (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)]   (MATH.md fact 6).
+//   P_r = (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)]   (docs/mathematics.md fact 6).
 // Every term is bounded by 1: a sum of n bounded terms, stable in double precision. The
 // derivation proves it equal to the engine's closed form for small n and checks it for
 // every n (tests/roughness_test.cpp).

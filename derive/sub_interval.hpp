@@ -81,12 +81,12 @@ GiNaC::ex as_ex(const std::vector<MomentTerm>& terms);
 std::vector<MomentTerm> inner_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta, bool edge_basis = false);
 std::vector<MomentTerm> outer_moment(const GiNaC::ex& Phi, const GiNaC::ex& beta, bool edge_basis = false);
 
-// Eq. 6 from the right-hand side g of eq. 5 alone (MATH.md fact 7 in v = tan(x^/2)):
+// Eq. 6 from the right-hand side g of eq. 5 alone (docs/mathematics.md fact 7 in v = tan(x^/2)):
 //   P = 2 pi sqrt(1 + alpha^2) M[v g(v)/(1 + v^2)],
 // so that a piecewise g needs only the moments of its pieces.
 GiNaC::ex load_integrand(const GiNaC::ex& g);
 
-// The slope of eq. 6 from g alone: with G = g(v(x^)), integration by parts in MATH.md fact 7
+// The slope of eq. 6 from g alone: with G = g(v(x^)), integration by parts in docs/mathematics.md fact 7
 // (G(0) = 0) gives P = 2 sqrt2 Int_0^a^ sqrt(cos x^ - cos a^) (G/cos(x^/2))' dx^, whose
 // derivative differentiates no end point:
 //   dP/da^ = sin(a^) (pi/2) sqrt(1 + alpha^2) M[(1 + v^2) g'(v) + v g(v)].

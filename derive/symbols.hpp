@@ -6,7 +6,7 @@
 
 namespace wavecontact::derive::sym {
 
-// Coordinates (period normalised to 2*pi, MATH.md section 2).
+// Coordinates (period normalised to 2*pi, docs/mathematics.md section 2).
 const GiNaC::realsymbol& x();      // normalised coordinate x^ = pi x / b1
 const GiNaC::realsymbol& xi();     // integration coordinate of the kernel
 const GiNaC::realsymbol& v();      // v = tan(x^/2)            (eq. 4)

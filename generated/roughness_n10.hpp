@@ -47,7 +47,7 @@ inline Scalar roughness_n10_pressure(const Scalar& E, const Scalar& H2, const Sc
   return (d0 * (H2 * (E * (sqrt((Scalar(1.0) + Cx) * D) * Scalar(15.707963267948966))))) / b1;
 }
 
-// Load of the roughness harmonic, n = 10: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).
+// Load of the roughness harmonic, n = 10: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).
 // Total ops: 70 (17 add, 53 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar roughness_n10_load(const Scalar& E, const Scalar& H2, const Scalar& Ca, const Scalar& Sa) {

@@ -401,7 +401,7 @@ inline Scalar roughness_n128_pressure(const Scalar& E, const Scalar& H2, const S
   return (d0 * (H2 * (E * (sqrt((Scalar(1.0) + Cx) * D) * Scalar(201.06192982974676))))) / b1;
 }
 
-// Load of the roughness harmonic, n = 128: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).
+// Load of the roughness harmonic, n = 128: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).
 // Total ops: 1014 (253 add, 761 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar roughness_n128_load(const Scalar& E, const Scalar& H2, const Scalar& Ca, const Scalar& Sa) {

@@ -23,7 +23,7 @@ inline Scalar roughness_n2_pressure(const Scalar& E, const Scalar& H2, const Sca
   return (d0 * (H2 * (E * (sqrt((Scalar(1.0) + Cx) * D) * Scalar(3.1415926535897931))))) / b1;
 }
 
-// Load of the roughness harmonic, n = 2: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).
+// Load of the roughness harmonic, n = 2: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).
 // Total ops: 7 (1 add, 6 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar roughness_n2_load(const Scalar& E, const Scalar& H2, const Scalar& Ca, const Scalar& Sa) {

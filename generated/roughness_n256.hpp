@@ -785,7 +785,7 @@ inline Scalar roughness_n256_pressure(const Scalar& E, const Scalar& H2, const S
   return (d0 * (H2 * (E * (sqrt((Scalar(1.0) + Cx) * D) * Scalar(402.12385965949352))))) / b1;
 }
 
-// Load of the roughness harmonic, n = 256: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).
+// Load of the roughness harmonic, n = 256: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).
 // Total ops: 2038 (509 add, 1529 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar roughness_n256_load(const Scalar& E, const Scalar& H2, const Scalar& Ca, const Scalar& Sa) {

@@ -179,7 +179,7 @@ inline Scalar roughness_n54_pressure(const Scalar& E, const Scalar& H2, const Sc
   return (d0 * (H2 * (E * (sqrt((Scalar(1.0) + Cx) * D) * Scalar(84.823001646924411))))) / b1;
 }
 
-// Load of the roughness harmonic, n = 54: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).
+// Load of the roughness harmonic, n = 54: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).
 // Total ops: 422 (105 add, 317 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar roughness_n54_load(const Scalar& E, const Scalar& H2, const Scalar& Ca, const Scalar& Sa) {

@@ -191,7 +191,7 @@ inline Scalar roughness_n58_pressure(const Scalar& E, const Scalar& H2, const Sc
   return (d0 * (H2 * (E * (sqrt((Scalar(1.0) + Cx) * D) * Scalar(91.106186954104004))))) / b1;
 }
 
-// Load of the roughness harmonic, n = 58: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (MATH.md fact 6).
+// Load of the roughness harmonic, n = 58: (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] (docs/mathematics.md fact 6).
 // Total ops: 454 (113 add, 341 mul, 0 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
 inline Scalar roughness_n58_load(const Scalar& E, const Scalar& H2, const Scalar& Ca, const Scalar& Sa) {

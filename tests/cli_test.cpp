@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(load_and_solve_print_one_row) {
   const auto row = fields(lines(s.out).at(1));
   BOOST_TEST(row.at(3) == 1.0);
   BOOST_TEST(row.at(4) == 0.45, tt::tolerance(1e-12));
-  BOOST_TEST(row.at(6) == 0.3234091494997856, tt::tolerance(1e-11));  // MATH.md fact 2, p(0)
+  BOOST_TEST(row.at(6) == 0.3234091494997856, tt::tolerance(1e-11));  // docs/mathematics.md fact 2, p(0)
   BOOST_TEST(row.at(9) < 1e-10);
 
   // The single-zone family: one row per half-width.
@@ -150,7 +150,7 @@ BOOST_AUTO_TEST_CASE(solve_answers_every_load) {
   BOOST_TEST(top.at(3) + valley.at(3) == 1.9 * M_PI, tt::tolerance(1e-10));
 
   // The seed's two-scale profile: a single zone that the next asperity penetrates is
-  // refused (MATH.md fact 10), the contact at its load answered.
+  // refused (docs/mathematics.md fact 10), the contact at its load answered.
   const std::string fig7 = "--H1 1 --b1 10 --m 0 --E 1 --H2 0.15 --n 8";
   const Result penetrating = run("pressure " + fig7 + " --a 0.5 --x 0");
   BOOST_TEST(penetrating.status == 3);
@@ -259,7 +259,7 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png_into_any_path) {
 }
 
 BOOST_AUTO_TEST_CASE(roughness_columns_are_filled) {
-  // n = 16, a = 0.5 b2 (MATH.md fact 4): p_roughness(0) = 10.21387598287078 H2 E*; with
+  // n = 16, a = 0.5 b2 (docs/mathematics.md fact 4): p_roughness(0) = 10.21387598287078 H2 E*; with
   // H2 = 1e-3 the neighbouring asperities stay clear of the flat, so the zone is the contact.
   const std::string rough = profile + " --m 0 --H2 0.001 --n 16 --a " + number(0.5 * M_PI / 16);
   const Result r = run("pressure " + rough + " --x 0");
@@ -350,7 +350,7 @@ BOOST_AUTO_TEST_CASE(user_profile_commands) {
   BOOST_TEST(malformed.err.find("expected NAME=VALUE") != std::string::npos, malformed.err);
   const Result mixed = run("load " + sine + " --H1 1 --a 3");
   BOOST_TEST(mixed.status == 2);
-  // Eq. 2 as an expression beyond b1/2: MATH.md fact 8, m = 2, a = 0.6 b1, P = 3.0393833648235.
+  // Eq. 2 as an expression beyond b1/2: docs/mathematics.md fact 8, m = 2, a = 0.6 b1, P = 3.0393833648235.
   const Result beyond = run("load --profile-name parametric_wave_curve --param H1=1 --param m=2 "
                             "--b1 10 --E 1 --a 6");
   BOOST_TEST(beyond.status == 0, beyond.err);

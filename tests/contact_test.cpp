@@ -2,9 +2,9 @@
 // (contact_oracle_test.cpp has that):
 // - where one zone per period is the solution, the closed forms of the wave curve (both
 //   regimes), the two-scale profile and a user profile, to 1e-10;
-// - full contact against p = P/(2 pi) + (E*/2) sum |k| y_k e^(ikx) (MATH.md fact 11) and its
+// - full contact against p = P/(2 pi) + (E*/2) sum |k| y_k e^(ikx) (docs/mathematics.md fact 11) and its
 //   onset loads;
-// - the gap of single zones (MATH.md fact 10, the issue's measurements);
+// - the gap of single zones (docs/mathematics.md fact 10, the issue's measurements);
 // - the conditions of a contact at multi-zone loads: p >= 0 on the zones and 0 at their
 //   ends, gap >= 0 off them and 0 at both ends of every gap, the zones' loads adding to P;
 // - geometric convergence in the nodes per zone, and an error estimate that bounds the
@@ -75,7 +75,7 @@ BOOST_AUTO_TEST_CASE(wave_curve_single_zone_is_the_closed_form) {
 
 // Beyond b1/2 the single zone is the contact while the valley stays open: m = 0.5 all the
 // way to full contact, m = 1 up to a = 0.6 b1; there the exact solution is the runtime's
-// quadrature (MATH.md fact 8). For m = 2 the valley closes at a = 0.5015 b1: MATH.md's check
+// quadrature (docs/mathematics.md fact 8). For m = 2 the valley closes at a = 0.5015 b1: docs/mathematics.md's check
 // value at a = 0.6 b1 (p(0) = 0.888) is a single zone of the family that interpenetrates,
 // and the contact at its load has two zones.
 BOOST_AUTO_TEST_CASE(wave_curve_single_zone_beyond_half_period) {
@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(full_contact_is_the_fourier_solution) {
   BOOST_TEST(full_contact_load(Surface(p)) == -pi * lowest, tt::tolerance(1e-10));
 }
 
-// MATH.md fact 11 / the issue: onset of full contact of the wave curve, pa/p*.
+// docs/mathematics.md fact 11 / the issue: onset of full contact of the wave curve, pa/p*.
 BOOST_AUTO_TEST_CASE(full_contact_onset_of_the_wave_curve) {
   const std::vector<std::pair<double, double>> onset{{0.0, 1.0}, {0.7, 0.878}, {1.0, 0.891},
                                                      {2.0, 1.154}, {10.0, 3.975}, {35.0, 12.97}};
@@ -156,7 +156,7 @@ BOOST_AUTO_TEST_CASE(full_contact_onset_of_the_wave_curve) {
   }
 }
 
-// MATH.md fact 10 and the issue's measurements: single zones that interpenetrate.
+// docs/mathematics.md fact 10 and the issue's measurements: single zones that interpenetrate.
 BOOST_AUTO_TEST_CASE(single_zone_gap) {
   const Surface s8(fig7(0, 0.15, 8));
   BOOST_TEST(single_zone_check(s8, 0.3).solution);

@@ -1,4 +1,4 @@
-// An independent reference for full contact (MATH.md fact 11): sum_k k y_k cos(k x) of an even
+// An independent reference for full contact (docs/mathematics.md fact 11): sum_k k y_k cos(k x) of an even
 // 2 pi-periodic profile y from its cosine coefficients y_k = (2/N) sum_j y(x_j) cos(k x_j) at N
 // equally spaced points (the trapezoid rule, geometrically convergent for an analytic y), in
 // long double, up to k = N/2 - 1.

@@ -1,5 +1,5 @@
-// Numerical tests of the runtime: MATH.md's check values, Westergaard, the independent
-// numerical inversion (MATH.md section 4), the load identity (MATH.md fact 7), and the
+// Numerical tests of the runtime: docs/mathematics.md's check values, Westergaard, the independent
+// numerical inversion (docs/mathematics.md section 4), the load identity (docs/mathematics.md fact 7), and the
 // domain checks. Uses the runtime only.
 #define BOOST_TEST_MODULE numerical
 #include <boost/test/unit_test.hpp>
@@ -37,7 +37,7 @@ double numerical_pressure(const WavinessParams& p, double a, double x, int nodes
   return pi / p.b1 * wavecontact::numerical_inversion(g, alpha, u, nodes);
 }
 
-// MATH.md fact 7: P = 2 sqrt(2) Int_0^a^ G(x^) sin(x^/2) / sqrt(cos x^ - cos a^) dx^.
+// docs/mathematics.md fact 7: P = 2 sqrt(2) Int_0^a^ G(x^) sin(x^/2) / sqrt(cos x^ - cos a^) dx^.
 double load_by_quadrature(const WavinessParams& p, double a) {
   const double ahat = pi * a / p.b1;
   boost::math::quadrature::tanh_sinh<double> integrator;

@@ -1,4 +1,4 @@
-// The wave curve beyond a = b1/2 (MATH.md facts 7 and 8): the exact solution against an
+// The wave curve beyond a = b1/2 (docs/mathematics.md facts 7 and 8): the exact solution against an
 // independent quadrature, the check values, Westergaard up to full contact, the
 // agreement with the closed forms at b1/2, stability (snap-through) and admissibility.
 #define BOOST_TEST_MODULE periodic_regime
@@ -24,7 +24,7 @@ namespace {
 
 const double pi = M_PI;
 
-// Normalised units of MATH.md: b1 = pi, H1 = E* = 1, so p is p^.
+// Normalised units of docs/mathematics.md: b1 = pi, H1 = E* = 1, so p is p^.
 WavinessParams normalised(double m) { return {1.0, pi, m, 1.0}; }
 
 
@@ -77,7 +77,7 @@ BOOST_AUTO_TEST_CASE(math_md_fact_8_check_values) {
   BOOST_TEST(wavecontact::pressure(normalised(10), 0.75 * pi, 0.0) == 0.7480093387611,
              tt::tolerance(1e-10));
   BOOST_TEST(wavecontact::load(normalised(10), 0.75 * pi) == 2.5285385483266, tt::tolerance(1e-10));
-  // pa/p* at a/b1 = 0.5, 0.6, 0.7, given to three decimals. (MATH.md's 0.968 for m = 2 at
+  // pa/p* at a/b1 = 0.5, 0.6, 0.7, given to three decimals. (docs/mathematics.md's 0.968 for m = 2 at
   // 0.6 rounds P/pi = 3.0393833648235/pi = 0.96747 up; its own check value decides.)
   struct Row {
     double m, values[3];

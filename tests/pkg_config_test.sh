@@ -11,7 +11,7 @@ int main() {
   const wavecontact::WavinessParams p{1.0, 3.141592653589793, 2.0, 1.0};
   const double P = wavecontact::load(p, 0.45 * 3.141592653589793);
   std::printf("%.16g\n", P);
-  return P > 1.5256934306558 && P < 1.5256934306559 ? 0 : 1;  // MATH.md: 1.525693430655888
+  return P > 1.5256934306558 && P < 1.5256934306559 ? 0 : 1;  // docs/mathematics.md: 1.525693430655888
 }
 CPP
 export PKG_CONFIG_PATH="$prefix/lib/pkgconfig"

@@ -75,7 +75,7 @@ BOOST_AUTO_TEST_CASE(wave_curve_expression_reproduces_the_built_in) {
 }
 
 // Example (b): g(v) = -(E/2) y'(x(v)) with y' = -H1 sin x - 3 H3 sin 3x, inverted
-// numerically (MATH.md section 4) at 400 nodes.
+// numerically (docs/mathematics.md section 4) at 400 nodes.
 BOOST_AUTO_TEST_CASE(two_harmonic_against_numerical_inversion) {
   const double b1 = 10, E = 2;
   double worst = 0;

@@ -36,7 +36,7 @@ void check_equal(const ex& got, const ex& expected, const std::string& what) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(golden_coefficients) {
-  // MATH.md section 2.
+  // docs/mathematics.md section 2.
   const std::vector<std::vector<long>> golden{
       {-2, 4}, {-2, 20, -48, 32}, {-2, 84, -1008, 5280, -14080, 19968, -14336, 4096}};
   for (const auto& expected : golden) {
@@ -65,7 +65,7 @@ BOOST_AUTO_TEST_CASE(coefficients_for_every_generated_n) {
       sum += k[j - 1];
       largest = std::max(largest, GiNaC::abs(k[j - 1]), [](const numeric& a, const numeric& b) { return a < b; });
     }
-    // sum_j k_j = lim_{v->0} s(v)/v = lim sin(n x)/(n tan(x/2)) = 2 (MATH.md fact 5).
+    // sum_j k_j = lim_{v->0} s(v)/v = lim sin(n x)/(n tan(x/2)) = 2 (docs/mathematics.md fact 5).
     BOOST_TEST(sum == numeric(2), "sum of k_j for n = " << n);
     if (n == 16 || n == 32 || n == 128) BOOST_TEST_MESSAGE("n = " << n << ": max |k_j| = " << largest.to_double());
     if (n <= 256) BOOST_TEST(expansion_matches_de_moivre(n, k), "eq. 18 = de Moivre for n = " << n);
@@ -99,7 +99,7 @@ BOOST_AUTO_TEST_CASE(engine_inversion_is_the_legendre_dirichlet_form) {
     const ex stable_at_point = atoms_in_v_variables(stable).subs(point).evalf();
     BOOST_TEST(GiNaC::ex_to<numeric>(at_point).is_positive());
     BOOST_TEST(GiNaC::ex_to<numeric>(stable_at_point).is_positive());
-    // The load (MATH.md fact 6).
+    // The load (docs/mathematics.md fact 6).
     check_equal(load_integral(inversion, radicals).with_roots(radicals),
                 atoms_in_v_variables(legendre_dirichlet_load(n)), "P_r, n = " + std::to_string(n));
   }

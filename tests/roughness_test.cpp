@@ -1,4 +1,4 @@
-// Numerical tests of the two-scale runtime (eqs. 15-21): MATH.md's check values, the
+// Numerical tests of the two-scale runtime (eqs. 15-21): docs/mathematics.md's check values, the
 // Legendre load identity, the independent numerical inversion, the exact evaluation of the
 // paper's eq. 20, superposition and admissibility.
 #define BOOST_TEST_MODULE roughness
@@ -33,7 +33,7 @@ const std::vector<int> tested_n{2, 8, 16, 32, 64, 128, 256};
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(math_md_check_values) {
-  // MATH.md fact 4 and 6, b1 = pi, H2 = E* = 1.
+  // docs/mathematics.md fact 4 and 6, b1 = pi, H2 = E* = 1.
   const TwoScaleContact n16(roughness_only(1, 16), 0.5 * pi / 16);
   BOOST_TEST(n16.roughness_pressure(0) == 10.21387598287078, tt::tolerance(1e-13));
   BOOST_TEST(n16.roughness_load() == 1.399144397552393, tt::tolerance(1e-13));
@@ -62,7 +62,7 @@ double eq20_by_direct_sum(int n, double a, double x) {
 }
 
 BOOST_AUTO_TEST_CASE(paper_eq20_is_evaluated_exactly) {
-  // MATH.md gives 16.61550412074067 for n = 24, a = 0.8 b2; the exact sum is
+  // docs/mathematics.md gives 16.61550412074067 for n = 24, a = 0.8 b2; the exact sum is
   // 16.6155041188379280 (its 1e-10 discrepancy is the double-precision cancellation
   // of summing eq. 20 term by term).
   for (int n : {16, 24, 64, 128}) {
@@ -81,7 +81,7 @@ BOOST_AUTO_TEST_CASE(paper_eq20_is_evaluated_exactly) {
 
 BOOST_AUTO_TEST_CASE(load_is_the_legendre_identity) {
   // P_r = (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)] with Boost.Math's Legendre
-  // polynomials (MATH.md fact 6), on the whole range a <= b1/2.
+  // polynomials (docs/mathematics.md fact 6), on the whole range a <= b1/2.
   for (int n : tested_n) {
     for (double fa : {1e-3, 0.01, 0.1, 0.25, 0.4, 0.5}) {
       const double b1 = 2.0, E = 3.0, H2 = 0.1, a = fa * b1;
@@ -97,7 +97,7 @@ BOOST_AUTO_TEST_CASE(load_is_the_legendre_identity) {
 }
 
 BOOST_AUTO_TEST_CASE(pressure_agrees_with_numerical_inversion) {
-  // MATH.md section 4, with 4n + 200 nodes; error relative to the scale E* H2 n pi/b1.
+  // docs/mathematics.md section 4, with 4n + 200 nodes; error relative to the scale E* H2 n pi/b1.
   for (int n : tested_n) {
     const double b1 = 2.5, E = 2.0, H2 = 0.01;
     const double scale = E * H2 * n * pi / b1;

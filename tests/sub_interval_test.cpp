@@ -1,6 +1,6 @@
 // The engine over part of a zone (derive/sub_interval.hpp), at 40 digits:
 // - the moments over [0, beta] and [beta, alpha] add up to the engine's whole moment;
-// - the load from g alone, 2 pi sqrt(1 + alpha^2) M[v g/(1 + v^2)] (MATH.md fact 7), is the
+// - the load from g alone, 2 pi sqrt(1 + alpha^2) M[v g/(1 + v^2)] (docs/mathematics.md fact 7), is the
 //   engine's load of the wave curve (eq. 6 applied to the inversion), a <= b1/2;
 // - the load's slope from g alone, (pi/2) sqrt(1 + alpha^2) M[(1 + v^2) g' + v g] sin(a^), is
 //   the derivative of the load, within the zone's top branch and beyond b1/2;

@@ -1,5 +1,5 @@
 // Symbolic regression tests of derive/: the derived formulas against independently
-// written expectations (MATH.md, the seed's eq. 11, Westergaard, Hertz), in the manner
+// written expectations (docs/mathematics.md, the seed's eq. 11, Westergaard, Hertz), in the manner
 // of GiNaC's check/exam_*.cpp: (got - expected).normal() must be zero, and a failure
 // prints the input, the result and the expectation.
 #define BOOST_TEST_MODULE symbolic
@@ -71,7 +71,7 @@ BOOST_AUTO_TEST_CASE(half_angle_multiples_match_de_moivre_and_trig) {
 }
 
 BOOST_AUTO_TEST_CASE(derived_g_is_eq_11) {
-  // Eq. 11 as reconstructed in MATH.md.
+  // Eq. 11 as reconstructed in docs/mathematics.md.
   const ex v = sym::v(), m = sym::m();
   const ex eq11 = sym::E() * sym::H1() * (m + 1) * v * (1 + pow(v, 2)) /
                   pow(m - m * pow(v, 2) + pow(v, 2) + 1, 2);
@@ -85,7 +85,7 @@ BOOST_AUTO_TEST_CASE(engine_rejects_even_and_non_rational_rhs) {
 }
 
 BOOST_AUTO_TEST_CASE(m_zero_is_westergaard) {
-  // Westergaard (MATH.md fact 3), b1 = pi: p = E H1 cos(x/2) sqrt(sin^2(a/2) - sin^2(x/2)),
+  // Westergaard (docs/mathematics.md fact 3), b1 = pi: p = E H1 cos(x/2) sqrt(sin^2(a/2) - sin^2(x/2)),
   // P = pi E H1 sin^2(a/2); in v-variables cos^2(x/2) = 1/(1+s), sin^2(a/2) = alpha^2/(1+alpha^2).
   const auto& d = waviness();
   const ex s = sym::s(), alpha2 = pow(sym::alpha(), 2), EH = sym::E() * sym::H1();

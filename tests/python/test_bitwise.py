@@ -67,7 +67,7 @@ def test_contact(reference):
 
 
 def test_kcoef_is_exact():
-    # eq. 18: k_j = (-1)^(n-j) C(n-1+j, n-j) 2^(2j-1)/n, independently of the runtime; MATH.md's n = 8.
+    # eq. 18: k_j = (-1)^(n-j) C(n-1+j, n-j) 2^(2j-1)/n, independently of the runtime; docs/mathematics.md's n = 8.
     assert wc.kcoef(8) == [-2, 84, -1008, 5280, -14080, 19968, -14336, 4096]
     n = 128
     expected = [Fraction((-1) ** (n - j) * math.comb(n - 1 + j, n - j) * 2 ** (2 * j - 1), n) for j in range(1, n + 1)]

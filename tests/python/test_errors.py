@@ -46,7 +46,7 @@ def test_value_error(call, message):
 
 
 def test_a_zone_that_is_not_the_contact_is_refused():
-    # The seed's Fig. 7 parameters: at a = 0.5 the neighbouring asperity penetrates (MATH.md fact 10).
+    # The seed's Fig. 7 parameters: at a = 0.5 the neighbouring asperity penetrates (docs/mathematics.md fact 10).
     c = wc.TwoScaleContact(
         wc.TwoScaleParams(wc.WavinessParams(H1=1, b1=10, m=0, E=1), wc.RoughnessParams(H2=0.15, n=8)), 0.5)
     assert not c.admissible and c.lowest_gap < -0.03

@@ -1,4 +1,4 @@
-// The independent numerical inversion of eq. 12 (MATH.md section 4): with v = alpha cos(theta),
+// The independent numerical inversion of eq. 12 (docs/mathematics.md section 4): with v = alpha cos(theta),
 //   p(u) = sqrt(alpha^2 - u^2) (1/pi) Int_0^pi (g(alpha cos theta) - g(u)) / (alpha cos theta - u) dtheta,
 // a smooth periodic integrand for analytic g, so the midpoint rule converges
 // geometrically. A reference for the closed forms and a fallback, not a substitute.

@@ -118,7 +118,7 @@ class Profile {
   double load(double a) const;
   double load_slope(double a) const;
 
-  // Full contact (MATH.md fact 11) in closed form: p(x) = P/(2 b1) + p_fc(x), the solution
+  // Full contact (docs/mathematics.md fact 11) in closed form: p(x) = P/(2 b1) + p_fc(x), the solution
   // for the load P while it is >= 0 everywhere (from the onset load -2 b1 min p_fc on).
   // Throws std::domain_error if P is not finite and >= 0, if the profile has a pole on the
   // period (reach() < b1), or if its evaluators were registered without one.

@@ -1,5 +1,5 @@
 // Which single-zone solutions of the wave curve are physical and stable, over the whole
-// range 0 < a < b1 (MATH.md facts 8 and 10):
+// range 0 < a < b1 (docs/mathematics.md facts 8 and 10):
 // - admissible: the pressure is >= 0 everywhere in the zone (beyond b1/2 the exact solution
 //   can turn negative on the lower flank) and the gap is >= 0 everywhere off it (for m above
 //   about 0.7 the valley closes before the load peaks; with roughness, the neighbouring
