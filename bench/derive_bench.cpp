@@ -3,7 +3,7 @@
 // Legendre-Dirichlet form, derive/harmonic_part.hpp, then the header and manifest written).
 // "Whole": the closed forms alone of the same profile through the engine's partial
 // fractions, as the engine derived every profile before the split (orders up to 32; it
-// grows like the fourth power of the order). scripts/bench.sh prints the table of the README.
+// grows like the fourth power of the order). scripts/bench.sh prints the table of docs/performance.md.
 #include <string>
 
 #include <benchmark/benchmark.h>

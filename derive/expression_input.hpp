@@ -28,12 +28,12 @@ inline constexpr int max_power = 256;                // |n| of ^n, an integer li
 // of the denominator once y is one fraction (cos(k x) counts k). A profile's cosine sum
 // costs little whatever its order (derive/harmonic_part.hpp); the rest goes through the
 // engine's partial fractions, whose cost grows steeply with the order of the denominator
-// (README, derivation times).
+// (docs/performance.md, derivation times).
 inline constexpr long max_order = 256;              // of the numerator; |k| of cos(k x)
 inline constexpr long max_denominator_order = 32;   // of the denominator
 // Of a profile kept whole (its denominator's leading coefficient in cos x depends on a
 // parameter, so it has no separate cosine sum): numerator and denominator. Its pole at
-// v^2 = -1 then carries the parameters, and order 16 takes seconds (README).
+// v^2 = -1 then carries the parameters, and order 16 takes seconds (docs/performance.md).
 inline constexpr long max_whole_order = 16;
 inline constexpr std::size_t max_parameters = 8;
 inline constexpr long max_number_bits = 256;  // numerator and denominator of a coefficient

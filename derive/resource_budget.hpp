@@ -1,7 +1,7 @@
 // A time and memory budget for one derivation of wavecontact-derive.
 //
 // GiNaC cannot be interrupted, and the engine's cost grows steeply with the order of a
-// profile's parameter-dependent terms (README, "Derivation times"), so the input bounds
+// profile's parameter-dependent terms (docs/performance.md, "Derivation times"), so the input bounds
 // of expression_input.hpp alone do not bound every derivation's time. While a budget is
 // alive, a watchdog ends the process with exit status 4 (beyond reach) and a one-line message once the
 // time is spent, and allocations beyond the memory budget fail (std::bad_alloc). Nothing
