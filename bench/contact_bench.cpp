@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
+
 #include "wavecontact/contact.hpp"
 #include "wavecontact/two_scale.hpp"
 #ifdef WAVECONTACT_BEM_BASELINE
@@ -15,7 +17,7 @@ namespace {
 
 using namespace wavecontact;
 
-constexpr double pi = 3.14159265358979323846;
+using boost::math::double_constants::pi;
 
 // The seed's Fig. 7 profile with n = 16 at pa/p* = 0.3: seven zones per period.
 const TwoScaleParams rough16{{1.0, 10.0, 0.0, 1.0}, {0.15, 16}};

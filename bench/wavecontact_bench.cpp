@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <boost/math/constants/constants.hpp>
 
 #include "generate.hpp"   // derive/
 #include "plain_kernel.hpp"
@@ -28,7 +29,7 @@ namespace {
 
 using namespace wavecontact;
 
-constexpr double pi = 3.14159265358979323846;
+using boost::math::double_constants::pi;
 const WavinessParams waviness{1.0, 10.0, 2.0, 1.0};
 constexpr double half_width = 4.0;  // a/b1 = 0.4
 

@@ -7,6 +7,7 @@
 
 #include "block_keer.hpp"
 #include "expression_input.hpp"
+#include "printed.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -16,14 +17,8 @@ using GiNaC::numeric;
 
 namespace {
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-
 [[noreturn]] void refuse(const ex& call, const std::string& why) {
-  throw InputRefused(str(call) + ": " + why);
+  throw InputRefused(printed(call) + ": " + why);
 }
 
 std::vector<ex> abs_calls(const ex& y) {
@@ -76,8 +71,8 @@ std::set<numeric> sign_changes(const ex& call, const ex& f) {
         const numeric root = GiNaC::ex_to<numeric>((-factor.coeff(c, 0) / factor.coeff(c, 1)).normal());
         if (root > -1 && root < 1) points.insert(root);
       } else if (roots_inside(factor) > 0) {
-        refuse(call, "its argument changes sign where cos x is irrational (a root of " + str(factor) +
-                         " = 0 with cos x = " + str(c) + "); the branch point must be a rational cos x");
+        refuse(call, "its argument changes sign where cos x is irrational (a root of " + printed(factor) +
+                         " = 0 with cos x = " + printed(c) + "); the branch point must be a rational cos x");
       }
     }
   }
@@ -92,7 +87,7 @@ int sign_on(const ex& f, const numeric& lo, const numeric& hi) {
       if (GiNaC::is_a<numeric>(value) && !value.is_zero()) return GiNaC::ex_to<numeric>(value).is_positive() ? 1 : -1;
     }
   }
-  throw std::logic_error("split_branches: no point where " + str(f) + " is non-zero");
+  throw std::logic_error("split_branches: no point where " + printed(f) + " is non-zero");
 }
 
 }  // namespace
@@ -109,7 +104,7 @@ BranchSplit split_branches(const ex& y) {
     if (!abs_calls(argument).empty()) refuse(call, "abs() inside abs() is not supported");
     for (auto it = argument.preorder_begin(); it != argument.preorder_end(); ++it) {
       if (GiNaC::is_a<GiNaC::symbol>(*it) && *it != sym::x()) {
-        refuse(call, "the argument of abs() must not depend on the parameters (" + str(*it) +
+        refuse(call, "the argument of abs() must not depend on the parameters (" + printed(*it) +
                          "): where it changes sign must be a number");
       }
     }
@@ -126,7 +121,7 @@ BranchSplit split_branches(const ex& y) {
   }
   if (changes.size() > 1) {
     std::string list;
-    for (const numeric& c : changes) list += (list.empty() ? "" : ", ") + str(c);
+    for (const numeric& c : changes) list += (list.empty() ? "" : ", ") + printed(c);
     throw InputRefused("the arguments of abs() change sign at cos x = " + list +
                        ": the engine joins two branches, so they may change sign at one point of "
                        "0 < x < pi only");
@@ -147,8 +142,8 @@ BranchSplit split_branches(const ex& y) {
     split.cosine = change;
     split.beta = GiNaC::sqrt((1 - change) / (1 + change));
     if (!GiNaC::is_a<numeric>(split.beta) || !GiNaC::ex_to<numeric>(split.beta).is_rational()) {
-      throw InputRefused("the arguments of abs() change sign at cos x = " + str(change) + ", where tan(x/2) = " +
-                         str(split.beta) + " is irrational; the engine needs a rational tan(x/2) = r there, "
+      throw InputRefused("the arguments of abs() change sign at cos x = " + printed(change) + ", where tan(x/2) = " +
+                         printed(split.beta) + " is irrational; the engine needs a rational tan(x/2) = r there, "
                          "cos x = (1 - r^2)/(1 + r^2) (0, 3/5, -3/5, 12/13, ...)");
     }
   }

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "printed.hpp"
+
 namespace wavecontact::derive {
 
 using GiNaC::ex;
@@ -234,14 +236,8 @@ struct Degrees {
   long numerator = 0, denominator = 0;
 };
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-
 void check_coefficient(const numeric& q) {
-  if (!q.is_rational()) refuse("the coefficient " + str(q) + " is not a rational number");
+  if (!q.is_rational()) refuse("the coefficient " + printed(q) + " is not a rational number");
   if (q.numer().int_length() > limits::max_number_bits ||
       q.denom().int_length() > limits::max_number_bits) {
     refuse("a coefficient has more than " + std::to_string(limits::max_number_bits) +
@@ -258,12 +254,12 @@ Degrees degrees(const ex& e, const ex& x) {
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const ex k = (e.op(0) / x).normal();
     if (!GiNaC::is_a<numeric>(k) || !GiNaC::ex_to<numeric>(k).is_integer()) {
-      refuse("the argument of " + str(e) + " is not an integer multiple k x of x (a frequency "
+      refuse("the argument of " + printed(e) + " is not an integer multiple k x of x (a frequency "
              "k that is an integer, |k| <= " + std::to_string(limits::max_order) + ")");
     }
     const numeric frequency = GiNaC::abs(GiNaC::ex_to<numeric>(k));
     if (frequency > limits::max_order) {
-      refuse("the frequency of " + str(e) + " is beyond " + std::to_string(limits::max_order));
+      refuse("the frequency of " + printed(e) + " is beyond " + std::to_string(limits::max_order));
     }
     return {frequency.to_long(), 0};
   }

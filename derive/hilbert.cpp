@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "canonical.hpp"
+#include "printed.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -13,12 +14,6 @@ using GiNaC::ex;
 using GiNaC::numeric;
 
 namespace {
-
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
 
 // (1/pi) Int v^{2k}/sqrt(alpha^2 - v^2) dv = alpha^{2k} C(2k, k) / 4^k.
 ex polynomial_moment(const ex& polynomial, const GiNaC::symbol& t) {
@@ -97,7 +92,7 @@ RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex&
   const GiNaC::symbol& t = sym::t();
   if (!numerator.is_polynomial(t) || !denominator.is_polynomial(t)) {
     throw std::invalid_argument("weighted_moment: integrand is not rational in t: " +
-                                str(numerator / denominator));
+                                printed(numerator / denominator));
   }
   const ex polynomial_part = GiNaC::quo(numerator, denominator, t);
   const ex remainder = GiNaC::rem(numerator, denominator, t);
@@ -117,7 +112,7 @@ RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex&
     const int order = is_power ? GiNaC::ex_to<numeric>(factor_power.op(1)).to_int() : 1;
     if (base.degree(t) != 1) {
       throw std::invalid_argument(
-          "weighted_moment: denominator factor " + str(base) +
+          "weighted_moment: denominator factor " + printed(base) +
           " is not linear in v^2; only poles t = tau in v^2 over the rationals of the "
           "parameters are supported");
     }
@@ -144,14 +139,14 @@ ex even_in_square(const ex& e, const GiNaC::symbol& v, const GiNaC::symbol& t) {
   auto convert = [&](const ex& polynomial) {
     const ex p = polynomial.expand();
     if (!p.is_polynomial(v)) {
-      throw std::invalid_argument("even_in_square: not rational in " + str(v) + ": " + str(e));
+      throw std::invalid_argument("even_in_square: not rational in " + printed(v) + ": " + printed(e));
     }
     ex result = 0;
     for (int k = p.ldegree(v); k <= p.degree(v); ++k) {
       const ex c = p.coeff(v, k);
       if (c.is_zero()) continue;
       if (k % 2 != 0) {
-        throw std::invalid_argument("even_in_square: not even in " + str(v) + ": " + str(e));
+        throw std::invalid_argument("even_in_square: not even in " + printed(v) + ": " + printed(e));
       }
       result += c * GiNaC::pow(t, k / 2);
     }
@@ -172,7 +167,7 @@ RadicalSum weighted_moment(const RadicalSum& Phi, Radicals& radicals) {
 RadicalSum bounded_inversion(const ex& g, Radicals& radicals) {
   const GiNaC::symbol &v = sym::v(), &t = sym::t(), &s = sym::s();
   if (!(g.subs(v == -v) + g).normal().is_zero()) {
-    throw std::invalid_argument("bounded_inversion: g(v) is not odd: " + str(g));
+    throw std::invalid_argument("bounded_inversion: g(v) is not odd: " + printed(g));
   }
   // Gamma(t) = v g(v) = N(t)/Q(t) is even in v. The divided difference is
   // [N(t) Q(s) - N(s) Q(t)] / (t - s) over Q(t) Q(s): the division by t - s is exact, and

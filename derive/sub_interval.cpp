@@ -11,6 +11,7 @@
 
 #include "canonical.hpp"
 #include "hilbert.hpp"
+#include "printed.hpp"
 #include "symbols.hpp"
 
 namespace wavecontact::derive {
@@ -160,12 +161,6 @@ ex edge_moment_evalf(const ex& j, const ex& l, const ex& z, const ex& one_plus_z
   return in_edge_basis(small_integer(j), 1 + zz, [&](int i) { return quadratic_moment_value(i, ll, zz); });
 }
 
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
-}
-
 // (2/pi) Int_0^T0 Psi(T^2) dT, Psi rational in S with denominator c (a + b S)^l, and perhaps
 // the Cauchy factor (a' + b' S) (the one with sym::s()), T0 = sqrt(T0_squared): terms
 // (2/pi) n_j T0^(2j+1) a^-l I_{j,l}(b T0^2/a) / c, or with a'^-1 J_{j,l}(b' T0^2/a', b T0^2/a).
@@ -190,7 +185,7 @@ std::vector<MomentTerm> moment_in_T(const ex& Psi, const GiNaC::symbol& S, const
       continue;
     }
     if (order > 0 || b.degree(S) != 1) {
-      throw std::invalid_argument("sub-interval moment: the denominator " + str(nd.op(1)) +
+      throw std::invalid_argument("sub-interval moment: the denominator " + printed(nd.op(1)) +
                                   " has more than one factor linear in tan^2(phi)");
     }
     base = b;

@@ -11,6 +11,7 @@
 #include "expression_input.hpp"
 #include "full_contact.hpp"
 #include "hilbert.hpp"
+#include "printed.hpp"
 #include "sub_interval.hpp"
 #include "symbols.hpp"
 
@@ -60,12 +61,6 @@ bool macro_like(const std::string& name) {
   const std::string& text = spec.expression;  // echoed up to 200 characters
   const std::string shown = text.size() <= 200 ? text : text.substr(0, 200) + "... (" + std::to_string(text.size()) + " characters)";
   throw InputRefused("profile " + spec.name + " = \"" + shown + "\": " + why);
-}
-
-std::string str(const ex& e) {
-  std::ostringstream os;
-  os << e;
-  return os.str();
 }
 
 // The first power with a non-integer exponent (sqrt(cos(x)), cos(x)^(1/3), ...), if any.
@@ -251,7 +246,7 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
   const ex& y = d.branches.top;
   ex power;
   if (find_non_integer_power(y, power)) {
-    refuse(spec, str(power) + " is a non-integer power: the profile must be rational in "
+    refuse(spec, printed(power) + " is a non-integer power: the profile must be rational in "
                  "cos(k x) and sin(k x) (integer k) and in the parameters");
   }
   ex y_v;

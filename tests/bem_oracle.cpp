@@ -9,11 +9,13 @@
 #include <Eigen/Dense>
 #include <fftw3.h>
 
+#include <boost/math/constants/constants.hpp>
+
 namespace wavecontact::test {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+using boost::math::double_constants::pi;
 
 // u = K p on the periodic grid: u_k = 2 p_k/(E |k|), the mean of u left at 0.
 class Influence {

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/minima.hpp>
 
@@ -27,7 +28,7 @@ using wavecontact::Profile;
 
 namespace {
 
-const double pi = M_PI;
+using boost::math::double_constants::pi;
 const double kink = std::acos(0.6);  // x^ where 5 cos x - 3 changes sign
 
 // Normalised: b1 = pi, E* = 1, so x is x^ and p is p^.

@@ -9,6 +9,7 @@
 // with more nodes (a tolerance of 1e-12) confirms that the answer at tolerance 1e-8 is within
 // 1e-8.
 #define BOOST_TEST_MODULE contact_many_zones
+#include <boost/math/constants/constants.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -24,7 +25,7 @@ using namespace wavecontact;
 
 namespace {
 
-const double pi = M_PI;
+using boost::math::double_constants::pi;
 constexpr double b1 = 10;
 
 struct Case {

@@ -9,6 +9,7 @@
 // the continuation once stalled. The profiles are written here from eqs. 2-3, not taken from
 // the runtime.
 #define BOOST_TEST_MODULE contact_oracle
+#include <boost/math/constants/constants.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -31,7 +32,7 @@ using wavecontact::test::two_scale_profile;
 
 namespace {
 
-const double pi = M_PI;
+using boost::math::double_constants::pi;
 constexpr int grid = 4096;  // and 8192, 16384
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/minima.hpp>
 
 #include "wavecontact/contact.hpp"
@@ -30,7 +31,7 @@ using namespace wavecontact;
 
 namespace {
 
-const double pi = M_PI;
+using boost::math::double_constants::pi;
 
 // The seed's Fig. 7 parameters (H1 = 1, b1 = 10, E* = 1) with a roughness harmonic.
 TwoScaleParams fig7(double m, double H2, int n) { return {{1.0, 10.0, m, 1.0}, {H2, n}}; }

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
+
 template <typename Profile>
 long double fourier_slope_sum(const Profile& y, long double x, int N) {
-  const long double pi = 3.141592653589793238462643383279502884L;
+  using boost::math::long_double_constants::pi;
   std::vector<long double> values(static_cast<std::size_t>(N));
   for (int j = 0; j < N; ++j) values[static_cast<std::size_t>(j)] = y(2 * pi * j / N);
   long double sum = 0;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 // G(xi, branch) and G'(xi, branch) on the branch +1 (|xi| < kink) or -1 (beyond), each
@@ -25,7 +26,7 @@ long double kinked_reference_pressure(const G_t& G_on, const G_prime_t& G_prime,
   using std::fabs;
   using std::sin;
   using std::sqrt;
-  const long double pi = 3.141592653589793238462643383279502884L;
+  using boost::math::long_double_constants::pi;
   const auto branch_of = [&](long double xi) { return fabs(xi) <= kink ? 1 : -1; };
   const auto G = [&](long double xi) { return G_on(xi, branch_of(xi)); };
   const int branch = branch_of(x);

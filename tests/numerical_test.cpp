@@ -21,7 +21,7 @@ using wavecontact::WavinessParams;
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // G(x^) = -(E*/2) y'(x^) of the parametric wave curve on the top half of the asperity,
 // written from eq. 2 by hand (independent of derive/).

@@ -4,6 +4,7 @@
 // estimate (doubled: Richardson's estimate is itself an estimate) plus the solver's.
 #pragma once
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -49,7 +50,8 @@ inline void agree(double solver, double oracle, double oracle_error, double solv
 // zones), within it.
 inline void compare(const Contact& c, const BemEstimate& bem, double b1, const std::string& name,
                     double end_resolution = 0) {
-  const double pi = M_PI, to_x = pi / b1, to_p = b1 / pi;
+  using boost::math::double_constants::pi;
+  const double to_x = pi / b1, to_p = b1 / pi;
   // Zones of [0, pi] from the solver's zones of the period.
   std::vector<double> ends;
   for (const ContactZone& z : c.zones()) {

@@ -3,6 +3,7 @@
 // here under -Wall -Wextra -Wpedantic -Werror, registered, and their pressure checked against
 // the independent numerical inversion of eq. 12 (numerical_inversion.hpp).
 #define BOOST_TEST_MODULE parameter_free_profile
+#include <boost/math/constants/constants.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
@@ -19,7 +20,7 @@
 
 namespace {
 
-const double pi = 3.14159265358979323846;
+using boost::math::double_constants::pi;
 
 // The largest difference of Profile::pressure from the numerical inversion of
 // g(v) = -(E/2) y'(x(v)) over the zone |x| < a (b1 = pi), relative to the largest |p|.

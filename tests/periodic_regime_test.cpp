@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "kinked_reference.hpp"
@@ -22,7 +23,7 @@ using wavecontact::WavinessParams;
 
 namespace {
 
-const double pi = M_PI;
+using boost::math::double_constants::pi;
 
 // Normalised units of docs/mathematics.md: b1 = pi, H1 = E* = 1, so p is p^.
 WavinessParams normalised(double m) { return {1.0, pi, m, 1.0}; }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <string>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "wavecontact/numerical_inversion.hpp"
@@ -23,7 +24,7 @@ using wavecontact::Profile;
 
 namespace {
 
-const double pi = M_PI;
+using boost::math::double_constants::pi;
 
 double relative(double got, double expected) {
   return std::fabs(got - expected) / std::max(std::fabs(expected), 1e-300);

@@ -21,7 +21,7 @@ using namespace wavecontact;
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // Roughness only: H1 is irrelevant to the roughness parts, m = 0.
 TwoScaleParams roughness_only(double H2, int n, double b1 = pi, double E = 1) {

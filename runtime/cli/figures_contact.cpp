@@ -8,6 +8,8 @@
 #include <sstream>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
+
 #include "figure.hpp"
 #include "wavecontact/contact.hpp"
 #include "wavecontact/two_scale.hpp"
@@ -17,7 +19,7 @@ namespace wavecontact::cli {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+using boost::math::double_constants::pi;
 constexpr double H1 = 1.0, b1 = 10.0, E = 1.0;  // mm, mm, pressures in units of E*
 const double not_a_number = std::numeric_limits<double>::quiet_NaN();
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <boost/math/constants/constants.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/minima.hpp>
 
@@ -21,7 +22,7 @@ namespace wavecontact::cli {
 
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
+using boost::math::double_constants::pi;
 
 std::string fixed(double value, int digits) {
   char buffer[48];

@@ -16,7 +16,7 @@ namespace {
 // functions as the array kernels, an order of magnitude cheaper than Boost.Math's.
 double sin_pi(double q) { return Sleef_sinpi_u05(q); }
 double cos_pi(double q) { return Sleef_cospi_u05(q); }
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // cos(pi q) and 1 - cos(pi q) for q = y/b1 carried as r + e (r = fl(y/b1), e the
 // rounding error from an fma): first-order correction in e, so that 1 + m cos(pi q)

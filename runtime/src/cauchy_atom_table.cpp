@@ -10,7 +10,7 @@
 namespace wavecontact::detail {
 
 CauchyAtomTable::CauchyAtomTable(const Atoms& atoms, int count, const std::vector<double>& etas) : count_(count) {
-  constexpr double pi = boost::math::double_constants::pi;
+  using boost::math::double_constants::pi;
   if (count < 0 || count > max_branch_atoms) {
     throw std::logic_error("wavecontact::detail::CauchyAtomTable: count = " + std::to_string(count) +
                            " atoms (valid: 0 to max_branch_atoms = " + std::to_string(max_branch_atoms) + ")");

@@ -19,7 +19,7 @@ namespace wavecontact {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 std::mutex registry_mutex;
 

@@ -16,7 +16,7 @@ namespace wavecontact {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 constexpr int scan_points = 256, start_shapes = 24;
 
 // Normalised units: H1 = E* = 1, b1 = pi; pa/p* = P/pi.

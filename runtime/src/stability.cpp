@@ -20,7 +20,7 @@ namespace wavecontact {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 constexpr double eps = std::numeric_limits<double>::epsilon();
 constexpr int slope_samples = 256;
 

@@ -16,7 +16,7 @@ namespace wavecontact {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // The smallest panel extent in x^ for a surface whose highest harmonic is n.
 double resolution(int n) { return pi / std::max(4, n); }

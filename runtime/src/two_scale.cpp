@@ -27,7 +27,7 @@ namespace wavecontact {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // sum_j k_j z^j of eq. 20 = cos(t) sin(2 n t)/(n sin t) with cos^2 t = z, from the
 // Chebyshev form of the k_j (derive/roughness.hpp); 1 - z is passed separately so that

@@ -24,7 +24,7 @@ namespace wavecontact {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // One zone per period: 0 < a < b1 (a = b1 allowed where `full_contact_allowed`, the limit
 // of full contact). The printed formulas beyond b1/2 are the analytic branch of eq. 2,

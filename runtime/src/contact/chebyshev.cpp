@@ -15,7 +15,7 @@ namespace wavecontact::detail::chebyshev {
 
 namespace {
 
-constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 // Up to this many nodes the transform's cosines are tabulated; beyond, it is a fast Fourier
 // transform of the values extended evenly to 2 M points (an M^2 table would reach 134 MB at

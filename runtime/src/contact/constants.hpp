@@ -5,6 +5,6 @@
 
 namespace wavecontact::detail {
 
-inline constexpr double pi = boost::math::double_constants::pi;
+using boost::math::double_constants::pi;
 
 }  // namespace wavecontact::detail
