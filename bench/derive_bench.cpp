@@ -1,6 +1,6 @@
 // The derivation of a user profile against its order: one harmonic H cos(k x) and a power
 // H cos(x)^k. "Now": wavecontact-derive --profile end to end (the cosine sum split off in the
-// Legendre-Dirichlet form, derive/harmonic_part.hpp, then the header and manifest written).
+// Legendre-Dirichlet form, derive/profile/harmonic_part.hpp, then the header and manifest written).
 // "Whole": the closed forms alone of the same profile through the engine's partial
 // fractions, as the engine derived every profile before the split (orders up to 32; it
 // grows like the fourth power of the order). scripts/bench.sh prints the table of docs/performance.md.
@@ -8,11 +8,11 @@
 
 #include <benchmark/benchmark.h>
 
-#include "block_keer.hpp"
-#include "closed_forms.hpp"
-#include "generate.hpp"
-#include "symbols.hpp"
-#include "user_profile.hpp"
+#include "core/symbols.hpp"
+#include "emit/generate.hpp"
+#include "engine/closed_forms.hpp"
+#include "formulas/user_profile.hpp"
+#include "profile/block_keer.hpp"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <fstream>
 #include <iostream>
 
-#include "angle_form.hpp"
-#include "symbols.hpp"
-#include "waviness.hpp"
+#include "core/symbols.hpp"
+#include "engine/angle_form.hpp"
+#include "formulas/waviness.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -12,18 +12,18 @@
 #include <Eigen/Core>
 #include <boost/math/constants/constants.hpp>
 
-#include "generate.hpp"   // derive/
-#include "plain_kernel.hpp"
-#include "roughness.hpp"  // derive/
+#include "emit/generate.hpp"   // derive/
+#include "formulas/roughness.hpp"  // derive/
 #include "kinked_reference.hpp"  // tests/
-#include "waviness.hpp"  // generated/
-#include "waviness_csrc.hpp"
+#include "plain_kernel.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/threads.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
+#include "waviness.hpp"  // generated/
+#include "waviness_csrc.hpp"
 
 namespace {
 
@@ -233,7 +233,7 @@ BENCHMARK(BM_load);
 void BM_load_beyond_half(benchmark::State& state) { load_sweep(state, 5.01, 9.9); }
 BENCHMARK(BM_load_beyond_half);
 
-// The pressure beyond b1/2 (a = 0.75 b1, m = 2), in closed form (derive/beyond_branch.hpp): over
+// The pressure beyond b1/2 (a = 0.75 b1, m = 2), in closed form (derive/formulas/beyond_branch.hpp): over
 // the zone, and within 1e-2 to 1e-12 (relative) of the kink at x = b1/2, on both sides; and,
 // for the ratio, the independent quadrature of eq. 12 that the tests take as the reference
 // (tests/kinked_reference.hpp, long double).

@@ -7,11 +7,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/resource_budget.hpp"
 #include "decimal_option.hpp"
+#include "emit/generate.hpp"
+#include "emit/output.hpp"
 #include "exit_status.hpp"
-#include "generate.hpp"
-#include "output.hpp"
-#include "resource_budget.hpp"
 
 namespace {
 

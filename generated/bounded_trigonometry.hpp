@@ -3,7 +3,7 @@
 //
 // sin(pi t) at the bounded arguments of the array kernels' angle atoms (runtime/src/pressure_simd_kernels.hpp,
 // which take every atom from it by exact identities), without range reduction: a minimax
-// polynomial t p(t^2) in relative error for |t| <= 1/4 (Remez exchange at 50 digits, derive/minimax.cpp),
+// polynomial t p(t^2) in relative error for |t| <= 1/4 (Remez exchange at 50 digits, derive/formulas/minimax.cpp),
 // the coefficients rounded to doubles, p's constant term as two doubles (hi + lo), and the error
 // measured again with the rounded values (bound: 2^-55 = eps/8). tests/trigonometry_test.cpp measures
 // it as evaluated, within 1 ulp.

@@ -6,7 +6,7 @@
 // Derived by the Block-Keer change of variables and the bounded inversion (seed eqs. 4-6, 11, 12):
 //   g(v) = ((v^3)*E*H1+(v^3)*E*H1*m+E*H1*m*v+E*H1*v)/((m^2)*(v^4)-2*(m^2)*(v^2)-2*(v^4)*m+1+2*(v^2)+2*m+m^2+v^4)
 // This is its top branch, for cos x^ >= 0, where its abs() are (1+cos(x)*m)^(-1)*(1+m)*H1*cos(x);
-// beyond, the flank y = -(-1+cos(x)*m)^(-1)*(1+m)*H1*cos(x) (derive/branches.hpp).
+// beyond, the flank y = -(-1+cos(x)*m)^(-1)*(1+m)*H1*cos(x) (derive/profile/branches.hpp).
 // Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_profile(wavecontact::generated::parametric_wave_curve_profile_evaluator());
 #pragma once
@@ -69,7 +69,7 @@ inline Scalar parametric_wave_curve_height_slope(const Scalar& H1, const Scalar&
 }
 
 // Load P (eq. 6) once the zone reaches beyond the branch point: the sub-interval moments of both
-// branches (derive/sub_interval.hpp), I_{j,l} from wavecontact/quadratic_moment.hpp.
+// branches (derive/engine/sub_interval.hpp), I_{j,l} from wavecontact/quadratic_moment.hpp.
 // Total ops: 38 (7 add, 16 mul, 7 div, 2 sqrt, 4 neg, 2 moment calls), 6 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_load(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
@@ -213,7 +213,7 @@ inline Scalar parametric_wave_curve_flank_height_slope(const Scalar& H1, const S
   return (H1 + (m * H1)) / (_tmp0 * _tmp0);
 }
 
-// p_fc(x) of full contact over the whole period, both branches (derive/full_contact.hpp): p = P/(2 b1) +
+// p_fc(x) of full contact over the whole period, both branches (derive/formulas/full_contact.hpp): p = P/(2 b1) +
 // p_fc, while it is >= 0; Psi from wavecontact/conjugate_logarithm.hpp. Its terms cancel next to a pole of
 // the other branch's formula: beyond twice the own slope there, the side's form below.
 // Total ops: 83 (24 add, 49 mul, 5 div, 0 sqrt, 2 neg, 3 moment calls), 22 temporaries
@@ -298,7 +298,7 @@ inline Scalar parametric_wave_curve_full_contact_pressure_flank(const Scalar& E,
 }
 
 // Contact pressure p(x) on the top branch (|x^| below the branch point) of a zone reaching beyond the branch point: eq. 12
-// split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
+// split there (derive/formulas/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
 // at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.
 // Total ops: 4 (0 add, 2 mul, 2 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
@@ -588,7 +588,7 @@ inline Scalar parametric_wave_curve_beyond_branch_pressure_top_other_argument(co
 }
 
 // Contact pressure p(x) on the flank (beyond the branch point) of a zone reaching beyond the branch point: eq. 12
-// split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
+// split there (derive/formulas/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
 // at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.
 // Total ops: 5 (0 add, 3 mul, 2 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>

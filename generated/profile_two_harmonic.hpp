@@ -5,7 +5,7 @@
 // parameters: H1 H3.
 // Derived by the Block-Keer change of variables and the bounded inversion (seed eqs. 4-6, 11, 12).
 // Its cosine sum, y = sum_{k<=3} A_k cos(k x^) + R(cos x^), has the Legendre-Dirichlet form
-// (derive/harmonic_part.hpp), summed by wavecontact/harmonic_series.hpp; it is the whole profile.
+// (derive/profile/harmonic_part.hpp), summed by wavecontact/harmonic_series.hpp; it is the whole profile.
 // Evaluators in the angle atoms of runtime/include/wavecontact/angles.hpp. Register with the runtime:
 //   wavecontact::register_profile(wavecontact::generated::two_harmonic_profile_evaluator());
 #pragma once

@@ -69,7 +69,7 @@ inline Scalar waviness_pa_over_pstar(const Scalar& m, const Scalar& Ca, const Sc
 }
 
 // Load per unit length P (eq. 6) for b1/2 < a < b1, where the zone reaches the |cos|
-// branch of eq. 2: the sub-interval moments of both branches (derive/sub_interval.hpp),
+// branch of eq. 2: the sub-interval moments of both branches (derive/engine/sub_interval.hpp),
 // I_{j,l} from wavecontact/quadratic_moment.hpp.
 // Total ops: 38 (7 add, 16 mul, 7 div, 2 sqrt, 4 neg, 2 moment calls), 6 temporaries
 template <typename Scalar>
@@ -198,7 +198,7 @@ inline Scalar waviness_height_slope(const Scalar& H1, const Scalar& m, const Sca
 }
 
 // Contact pressure p(x) on the top branch (|x^| below the branch point) of a zone reaching beyond the branch point: eq. 12
-// split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
+// split there (derive/formulas/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
 // at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.
 // Total ops: 4 (0 add, 2 mul, 2 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>
@@ -488,7 +488,7 @@ inline Scalar waviness_pressure_beyond_half_top_other_argument(const Scalar& /*E
 }
 
 // Contact pressure p(x) on the flank (beyond the branch point) of a zone reaching beyond the branch point: eq. 12
-// split there (derive/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
+// split there (derive/formulas/beyond_branch.hpp). The argument y of the Cauchy factor 1/(1 + y w^2)
 // at the point, and 1 + y: out[0] = y, out[1] = 1 + y, the atoms' only dependence on it.
 // Total ops: 5 (0 add, 3 mul, 2 div, 0 sqrt, 0 neg), 0 temporaries
 template <typename Scalar>

@@ -13,16 +13,16 @@
 #include <sstream>
 #include <vector>
 
-#include "generate.hpp"
+#include "emit/generate.hpp"
 #include <boost/math/special_functions/cos_pi.hpp>
 
+#include "formulas/user_profile.hpp"
+#include "formulas/waviness.hpp"
 #include "high_precision.hpp"
 #include "isa_under_test.hpp"
-#include "user_profile.hpp"
-#include "waviness.hpp"
 #include "wavecontact/profile.hpp"
-#include "wavecontact/two_scale.hpp"
 #include "wavecontact/stability.hpp"
+#include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
 using wavecontact::test::PhysicalPoint;
@@ -157,7 +157,7 @@ GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTer
 }  // namespace
 
 // Beyond b1/2 (the zone reaches the |cos| branch of eq. 2): the load, pa/p* and dP/da in
-// closed form (derive/sub_interval.hpp, I_{j,l} in wavecontact/quadratic_moment.hpp) against
+// closed form (derive/engine/sub_interval.hpp, I_{j,l} in wavecontact/quadratic_moment.hpp) against
 // the same derived forms at 40 digits, over m from 0 to 1e4 and a from just above b1/2 to b1:
 // the load, pa/p* and dP/da within 64 eps (dP/da from the moments of (1 + v^2) g' + v g, so
 // that nothing cancels as the flank piece shrinks, a -> b1/2+).
@@ -192,7 +192,7 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
   check(slope);
 }
 
-// The pressure beyond b1/2 in closed form (derive/beyond_branch.hpp: eq. 12 split at the kink,
+// The pressure beyond b1/2 in closed form (derive/formulas/beyond_branch.hpp: eq. 12 split at the kink,
 // J_{j,l} atoms) against the derived v-form at 40 digits (s = tan^2(pi x/(2 b1)) and
 // alpha = tan(pi a/(2 b1)) from the exact inputs), over m from 0 to 1e4, a from just above
 // b1/2 to b1 and x across the zone: at the centre, next to the kink x = b1/2 on either side,

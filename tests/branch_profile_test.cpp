@@ -1,4 +1,4 @@
-// Profiles built with abs() through the runtime (derive/branches.hpp, beyond_branch.hpp),
+// Profiles built with abs() through the runtime (derive/profile/branches.hpp, beyond_branch.hpp),
 // derived at build time by wavecontact_generate (tests/CMakeLists.txt):
 // - kinked: y = H cos x + c (5 cos x - 3) |5 cos x - 3|, whose branch changes at cos x = 3/5
 //   (tan(x/2) = 1/2) with a kink in its slope, against the independent quadrature of kinked_reference.hpp, the load
@@ -139,7 +139,7 @@ BOOST_AUTO_TEST_CASE(pole_bounds_the_reach) {
   }
 }
 
-// Full contact in closed form (derive/full_contact.hpp) against the cosine coefficients of the
+// Full contact in closed form (derive/formulas/full_contact.hpp) against the cosine coefficients of the
 // profile (fourier_reference.hpp); a pole on the period has none.
 BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
   kinked(1, 1);  // registers

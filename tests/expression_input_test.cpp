@@ -1,13 +1,13 @@
-// The bounded expression input (derive/expression_input.hpp): every limit is accepted at
+// The bounded expression input (derive/profile/expression_input.hpp): every limit is accepted at
 // its value and refused one past it, naming what and why; decimals are read exactly.
 #define BOOST_TEST_MODULE expression_input
 #include <boost/test/unit_test.hpp>
 
 #include <string>
 
-#include "expression_input.hpp"
-#include "symbols.hpp"
-#include "user_profile.hpp"
+#include "core/symbols.hpp"
+#include "formulas/user_profile.hpp"
+#include "profile/expression_input.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

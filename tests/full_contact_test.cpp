@@ -1,4 +1,4 @@
-// Full contact in closed form for profiles built with abs() (derive/full_contact.hpp), at 50
+// Full contact in closed form for profiles built with abs() (derive/formulas/full_contact.hpp), at 50
 // digits, against an independent quadrature of the derivative of the conjugate function:
 //   p_fc(x^) = (E*/2)(pi/b1) (1/(2 pi)) Int_{-pi}^{pi} (y'(xi) - y'(x^)) cot((x^ - xi)/2) dxi,
 // with y' written here by hand and the integral split at the branch points and at x^ (its
@@ -16,9 +16,9 @@
 #include <tuple>
 #include <vector>
 
-#include "symbols.hpp"
+#include "core/symbols.hpp"
+#include "formulas/user_profile.hpp"
 #include "tanh_sinh_reference.hpp"
-#include "user_profile.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

@@ -1,4 +1,4 @@
-// The harmonic part of a profile (derive/harmonic_part.hpp): y = sum_k A_k cos(k x^) + R(cos x^).
+// The harmonic part of a profile (derive/profile/harmonic_part.hpp): y = sum_k A_k cos(k x^) + R(cos x^).
 // - the profile in cos x^ and its cosine coefficients reproduce the profile exactly, up to
 //   order 256;
 // - the split derivation (Legendre-Dirichlet form of the cosine sum + the engine's closed
@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "block_keer.hpp"
-#include "closed_forms.hpp"
-#include "emit_common.hpp"
-#include "harmonic_part.hpp"
-#include "symbols.hpp"
-#include "user_profile.hpp"
+#include "core/symbols.hpp"
+#include "emit/emit_common.hpp"
+#include "engine/closed_forms.hpp"
+#include "formulas/user_profile.hpp"
+#include "profile/block_keer.hpp"
+#include "profile/harmonic_part.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

@@ -154,7 +154,7 @@ BOOST_AUTO_TEST_CASE(load_slope_and_height) {
 }
 
 // Full contact in closed form: the cosine sum's sum_k k A_k cos(k x) (harmonic_series.hpp) plus
-// the rest's residues (derive/full_contact.hpp), against the profile's cosine coefficients
+// the rest's residues (derive/formulas/full_contact.hpp), against the profile's cosine coefficients
 // (fourier_reference.hpp, 1024 points: exact for the cosine sums of order <= 256 and
 // converged for c cos x/(2 - cos x)). Within 1e-12 of the largest |p_fc|.
 BOOST_AUTO_TEST_CASE(full_contact_against_the_cosine_coefficients) {

@@ -8,8 +8,8 @@
 
 #include <ginac/ginac.h>
 
-#include "angle_form.hpp"
-#include "symbols.hpp"
+#include "core/symbols.hpp"
+#include "engine/angle_form.hpp"
 
 namespace wavecontact::test {
 

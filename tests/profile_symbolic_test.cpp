@@ -6,12 +6,12 @@
 
 #include <string>
 
-#include "angle_form.hpp"
-#include "emit_common.hpp"
-#include "full_contact.hpp"
-#include "symbols.hpp"
-#include "user_profile.hpp"
-#include "waviness.hpp"
+#include "core/symbols.hpp"
+#include "emit/emit_common.hpp"
+#include "engine/angle_form.hpp"
+#include "formulas/full_contact.hpp"
+#include "formulas/user_profile.hpp"
+#include "formulas/waviness.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;
@@ -82,7 +82,7 @@ BOOST_AUTO_TEST_CASE(wave_curve_expression_equals_the_built_in_derivation) {
 // partial fractions, is the sum of the loads of its harmonics, each the Legendre form of a
 // harmonic cos(k x) in contact (the form the roughness issue derived for cos(n x)):
 // P_k = (pi/2) E* H k [P_{k-1}(cos a) - P_k(cos a)]. The profile's own derivation splits
-// the cosine sum off (derive/harmonic_part.hpp): A = (0, H1, 0, H3), nothing left.
+// the cosine sum off (derive/profile/harmonic_part.hpp): A = (0, H1, 0, H3), nothing left.
 BOOST_AUTO_TEST_CASE(two_harmonic_load_is_the_legendre_form) {
   const ProfileDerivation d = derive_profile({"two", "H1*cos(x)+H3*cos(3*x)", {{"H1", numeric(1)}, {"H3", numeric(1, 10)}}});
   const ex H1 = d.parameters[0], H3 = d.parameters[1], Ca = sym::Ca();
@@ -130,7 +130,7 @@ BOOST_AUTO_TEST_CASE(refusals_say_why_and_where) {
   contains(refusal("H*cos(x)", {{"H", 1}, {"H", 2}}), "given twice");
   contains(refusal("cos(x)", {}, "9lives"), "must be a C++ identifier");
   BOOST_TEST(refusal("cos(x)+cos(2*x)/4") == "accepted");
-  // abs() (derive/branches.hpp): one parameter-free sign change, at a rational tan(x/2), where
+  // abs() (derive/profile/branches.hpp): one parameter-free sign change, at a rational tan(x/2), where
   // the slope stays continuous; without a sign change it is its sign.
   contains(refusal("cos(x)+abs(cos(x))*abs(5*cos(x)-3)"), "change sign at cos x = 0, 3/5");
   contains(refusal("H*cos(x)+abs(5*cos(x)-3)", {{"H", 1}}), "its slope jumps at cos x = 3/5");
@@ -138,7 +138,7 @@ BOOST_AUTO_TEST_CASE(refusals_say_why_and_where) {
   BOOST_TEST(refusal("cos(x)+(5*cos(x)+3)*abs(5*cos(x)+3)/8") == "accepted");
 }
 
-// Full contact (derive/full_contact.hpp) against closed forms worked by hand: cos(3x) whole
+// Full contact (derive/formulas/full_contact.hpp) against closed forms worked by hand: cos(3x) whole
 // through the residues (its pole of order 3 at v^2 = -1) gives (E/2)(pi/b1) 3 T_3(Cx); and
 // 1/(c - cos x), whose cosine coefficients are 2 rho^k/sqrt(c^2 - 1), rho = c - sqrt(c^2 - 1),
 // gives (E/2)(pi/b1)(c Cx - 1)/(sqrt(c^2 - 1)(c - Cx)^2) (c = 5/4: a rational root; c = 2).

@@ -45,7 +45,7 @@ BOOST_AUTO_TEST_CASE(examples_are_built_in) {
 
 // Example (a): eq. 2 typed as an expression, |cos x| and all, over 0 < a <= b1. Up to b1/2 its
 // top branch's closed forms; beyond, the moments of both branches for the load, dP/da and the
-// pressure (the same derivation as the built-in, derive/beyond_branch.hpp), with the profile's
+// pressure (the same derivation as the built-in, derive/formulas/beyond_branch.hpp), with the profile's
 // emitted g choosing the pressure's parts in place of the built-in's |Cx| m.
 BOOST_AUTO_TEST_CASE(wave_curve_expression_reproduces_the_built_in) {
   double worst_p = 0, worst_beyond = 0, worst_P = 0, worst_slope = 0;

@@ -1,4 +1,4 @@
-// Symbolic regression tests of the roughness derivation (derive/roughness.*): eq. 18's
+// Symbolic regression tests of the roughness derivation (derive/formulas/roughness.*): eq. 18's
 // coefficients, the product form (eq. 16/17), the engine's exact inversion and the
 // Legendre-Dirichlet stable form, the paper's eq. 19.
 #define BOOST_TEST_MODULE roughness_symbolic
@@ -6,11 +6,11 @@
 
 #include <chrono>
 
-#include "angle_form.hpp"
-#include "block_keer.hpp"
-#include "hilbert.hpp"
-#include "roughness.hpp"
-#include "symbols.hpp"
+#include "core/symbols.hpp"
+#include "engine/angle_form.hpp"
+#include "engine/hilbert.hpp"
+#include "formulas/roughness.hpp"
+#include "profile/block_keer.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

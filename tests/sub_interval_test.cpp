@@ -1,4 +1,4 @@
-// The engine over part of a zone (derive/sub_interval.hpp), at 40 digits:
+// The engine over part of a zone (derive/engine/sub_interval.hpp), at 40 digits:
 // - the moments over [0, beta] and [beta, alpha] add up to the engine's whole moment;
 // - the load from g alone, 2 pi sqrt(1 + alpha^2) M[v g/(1 + v^2)] (docs/mathematics.md fact 7), is the
 //   engine's load of the wave curve (eq. 6 applied to the inversion), a <= b1/2;
@@ -17,13 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "emit_common.hpp"
-#include "hilbert.hpp"
-#include "radicals.hpp"
-#include "sub_interval.hpp"
-#include "symbols.hpp"
+#include "core/symbols.hpp"
+#include "emit/emit_common.hpp"
+#include "engine/hilbert.hpp"
+#include "engine/radicals.hpp"
+#include "engine/sub_interval.hpp"
+#include "formulas/waviness.hpp"
 #include "tanh_sinh_reference.hpp"
-#include "waviness.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

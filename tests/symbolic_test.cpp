@@ -9,12 +9,12 @@
 #include <map>
 #include <sstream>
 
-#include "block_keer.hpp"
-#include "canonical.hpp"
-#include "hilbert.hpp"
+#include "core/canonical.hpp"
+#include "core/symbols.hpp"
+#include "engine/hilbert.hpp"
+#include "formulas/waviness.hpp"
 #include "high_precision.hpp"
-#include "symbols.hpp"
-#include "waviness.hpp"
+#include "profile/block_keer.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

@@ -1,7 +1,7 @@
 // Eq. 12 for a right-hand side g of eq. 5 that is piecewise analytic with a kink in its slope at
 // v = +-beta: a profile built with |.| (eq. 2 beyond a = b1/2, or a user profile with abs())
 // whose contact zone reaches beyond the change of branch. The pressure comes from the emitted
-// closed forms' parts (derive/beyond_branch.hpp, derive/emit_common.hpp); this chooses them and
+// closed forms' parts (derive/formulas/beyond_branch.hpp, derive/emit/emit_common.hpp); this chooses them and
 // keeps the atoms of the zone once per zone.
 #pragma once
 

@@ -2,7 +2,7 @@
 // the zone reaches the |cos| branch of eq. 2, so the right-hand side of eq. 5 is
 //   g(v) = E* H1 (m+1) v (1+v^2) / (1 + v^2 + m |1 - v^2|)^2,
 // piecewise rational with a kink in its slope at v = +-1 (cos x^ = 0). The pressure, the load
-// and its slope have closed forms (derive/beyond_branch.hpp, derive/sub_interval.hpp).
+// and its slope have closed forms (derive/formulas/beyond_branch.hpp, derive/engine/sub_interval.hpp).
 #pragma once
 
 #include <cstddef>

@@ -154,7 +154,7 @@ void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::siz
 
 // sum_{j<n} P_{n-1-j}(Ca) V_j(Cx) by Clenshaw's recurrence in Reinsch's form,
 // d_j = (c_j + d_{j+1}) - 2 Sx b_{j+1}, b_j = d_j + b_{j+1}, as the generated
-// roughness_n<N>_pressure does per point (derive/roughness.hpp): here the coefficients come
+// roughness_n<N>_pressure does per point (derive/formulas/roughness.hpp): here the coefficients come
 // once per zone and each step runs across the block's points (3 operations a point and a
 // step, the bound of the cost at large n).
 // Written on the unit's vector registers: groups of vectors of points (7 of 4 with AVX2, then

@@ -30,7 +30,7 @@ namespace {
 using boost::math::double_constants::pi;
 
 // sum_j k_j z^j of eq. 20 = cos(t) sin(2 n t)/(n sin t) with cos^2 t = z, from the
-// Chebyshev form of the k_j (derive/roughness.hpp); 1 - z is passed separately so that
+// Chebyshev form of the k_j (derive/formulas/roughness.hpp); 1 - z is passed separately so that
 // small zones keep their digits.
 double eq20_sum(int n, double z, double one_minus_z) {
   const double s = std::sqrt(one_minus_z), c = std::sqrt(z);

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "generate.hpp"
+#include "emit/generate.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::vector<int> ns;

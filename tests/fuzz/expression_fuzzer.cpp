@@ -5,7 +5,7 @@
 //
 // The parse and every bound run on every input. The full derivation runs where it takes
 // well under the per-input timeout under the sanitizers (<= 2 parameters, order <= 8, or 4
-// with abs(), or a cosine sum of order <= 64, which splits off whole: derive/harmonic_part.hpp);
+// with abs(), or a cosine sum of order <= 64, which splits off whole: derive/profile/harmonic_part.hpp);
 // beyond that, the tool's time and memory budget (resource_budget.hpp) bounds it.
 //
 // Every emitted header must compile (issue 28: profiles without parameters emitted
@@ -25,10 +25,10 @@
 #include <string>
 #include <vector>
 
-#include "expression_input.hpp"
-#include "generate.hpp"
-#include "symbols.hpp"
-#include "user_profile.hpp"
+#include "core/symbols.hpp"
+#include "emit/generate.hpp"
+#include "formulas/user_profile.hpp"
+#include "profile/expression_input.hpp"
 
 extern char** environ;
 

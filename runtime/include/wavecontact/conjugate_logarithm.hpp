@@ -1,4 +1,4 @@
-// The logarithmic atom of full contact for a profile built with abs() (derive/full_contact.hpp):
+// The logarithmic atom of full contact for a profile built with abs() (derive/formulas/full_contact.hpp):
 //   Psi(a, b, a - b) = ((a - b)/(a + b)) sqrt(b/a) log|(sqrt a + sqrt b)/(sqrt a - sqrt b)|,
 // a, b >= 0, a + b > 0, with a - b passed as computed without cancellation by the caller. With
 // s^2 = min(a, b)/max(a, b) it is ((a - b)/(a + b)) 2 s atanh(s) for a >= b and

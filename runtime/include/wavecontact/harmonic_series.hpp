@@ -1,5 +1,5 @@
 // The cosine sum y(x^) = sum_{k=0}^{K} A_k cos(k x^) in contact: the Legendre-Dirichlet form
-// of every harmonic (derive/harmonic_part.hpp), summed so that double precision is enough
+// of every harmonic (derive/profile/harmonic_part.hpp), summed so that double precision is enough
 // for any K. The evaluators of a user profile with a harmonic part call these with the
 // coefficients A_k that wavecontact-derive emitted (profile_<name>.hpp); work holds K values.
 //
@@ -121,7 +121,7 @@ Scalar harmonic_series_load_slope_factor(const Scalar* A, int K, Scalar* work, c
   return pi / 2 * E * sum;
 }
 
-// Full contact: p_fc(x) = (pi/b1)(E*/2) sum_k k A_k T_k(Cx) (derive/full_contact.hpp).
+// Full contact: p_fc(x) = (pi/b1)(E*/2) sum_k k A_k T_k(Cx) (derive/formulas/full_contact.hpp).
 template <typename Scalar>
 Scalar harmonic_series_full_contact_pressure(const Scalar* A, int K, const Scalar& E, const Scalar& b1,
                                              const Scalar& Cx) {

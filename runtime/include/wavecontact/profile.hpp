@@ -1,5 +1,5 @@
 // User profiles: any even periodic shape y(x), rational in cos(k x) and sin(k x), derived
-// by `wavecontact-derive --profile EXPR --name NAME` (derive/user_profile.hpp) into
+// by `wavecontact-derive --profile EXPR --name NAME` (derive/formulas/user_profile.hpp) into
 // profile_<NAME>.hpp, whose evaluators reach the runtime through ProfileEvaluator.
 // Examples built in: parametric_wave_curve (eq. 2 as an expression, |cos x| and all) and
 // two_harmonic (H1 cos x + H3 cos 3x); others are registered with register_profile().
@@ -33,8 +33,8 @@ struct BranchEvaluators {
   double (*flank_g)(const double* q, double E, double v) = nullptr;
   // The closed-form pressure beyond the branch point on each side (0: the top, Cx above
   // `cosine`; 1: the flank), in parts: own, own_edge, other_cauchy, other_cauchy_edge, other,
-  // other_edge, jump (derive/beyond_branch.hpp), each from its atoms (atom_counts of them:
-  // moments of the zone, or at the Cauchy argument y, 1 + y of the point, derive/emit_common.hpp);
+  // other_edge, jump (derive/formulas/beyond_branch.hpp), each from its atoms (atom_counts of them:
+  // moments of the zone, or at the Cauchy argument y, 1 + y of the point, derive/emit/emit_common.hpp);
   // and each piece's pole argument, which selects the basis.
   void (*cauchy_argument[2])(const double* q, double E, double b1, double Ca, double Sa, double Cx, double Sx, double D,
                              double* y) = {};
@@ -70,7 +70,7 @@ struct ProfileEvaluator {
   double (*height)(const double* q, double Cx) = nullptr;
   double (*height_slope)(const double* q, double Cx) = nullptr;
   int harmonic = 1;
-  // Full contact: p_fc(x) in Cx (derive/full_contact.hpp), p = P/(2 b1) + p_fc, for a profile
+  // Full contact: p_fc(x) in Cx (derive/formulas/full_contact.hpp), p = P/(2 b1) + p_fc, for a profile
   // built with abs() over both branches.
   double (*full_contact_pressure)(const double* q, double E, double b1, double Cx) = nullptr;
   // The poles tau_i = tan^2(x^_i/2) of the profile that depend on the parameters.

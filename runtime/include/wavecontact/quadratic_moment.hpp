@@ -152,7 +152,7 @@ Scalar edge_moment_recurrence(int j, int l, const Scalar& z, const Scalar& one_p
 // I'_{j,l}(z) = Int_0^1 (1 - w^2)^j / (1 + z w^2)^l dw for z > -1, j >= 0, l >= 0: the moments
 // in powers of 1 - w^2 instead of w^2. Where z -> -1 (a pole factor's root just beyond the
 // sub-interval's end w = 1) every I_{j,l} tends to the same (1 + z)^(1/2-l) and a sum of them
-// cancels; the I'_{j,l}, of orders (1 + z)^(1/2+j-l), do not (derive/sub_interval.hpp chooses
+// cancels; the I'_{j,l}, of orders (1 + z)^(1/2+j-l), do not (derive/engine/sub_interval.hpp chooses
 // the basis by the sign of z). In double precision:
 //   -3/4 <= z <= 0: sum_k C(l+k-1, k) (-z)^k Int w^2k (1 - w^2)^j dw, positive terms;
 //   0 < z <= 7:     (1+z)^-l sum_k C(l+k-1, k) (z/(1+z))^k B_{j+k}, positive terms;
@@ -311,7 +311,7 @@ Scalar two_factor_edge(int j, int l, const Scalar& y, const Scalar& one_plus_y, 
 // (J_{j,0}(y, z) = I_{j,1}(y)), with one_plus_y = 1 + y and one_plus_z = 1 + z computed without
 // cancellation by the caller: the atom of a sub-interval moment whose integrand has a Cauchy
 // factor 1/(t - s) beside a pole factor (the pressure beyond a change of branch,
-// derive/sub_interval.hpp). With d = y - z and r = |d|/max(1 + y, 1 + z):
+// derive/engine/sub_interval.hpp). With d = y - z and r = |d|/max(1 + y, 1 + z):
 //   r > 4/5:  partial fractions, J_{j,i} = (y J_{j,i-1} - z I_{j,i}(z))/d, whose terms then
 //             cancel by a bounded factor (1 + y and 1 + z five times apart or more);
 //   r <= 4/5: nearer, where those terms grow like d^-i while J stays finite, the series of

@@ -3,7 +3,7 @@
 // superposed (eq. 21).
 //
 // The roughness pressure is the exact solution of eq. 17 in its Legendre-Dirichlet form
-// (derived and proven against the engine in derive/roughness.*):
+// (derived and proven against the engine in derive/formulas/roughness.*):
 //   p_r(x) = (pi/b1) (E* H2 n/sqrt2) sqrt(cos x^ - cos a^) sum_{j<n} P_{n-1-j}(cos a^) cos((j+1/2) x^),
 //   P_r    = (pi/2) E* H2 n [P_{n-1}(cos a^) - P_n(cos a^)],
 // a sum of n terms bounded by 1, accurate in double precision for any even n. Its
