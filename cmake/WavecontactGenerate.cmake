@@ -7,7 +7,7 @@
 #     wavecontact::register_roughness_evaluator({96, &wavecontact::generated::roughness_n96_pressure<double>,
 #                                                &wavecontact::generated::roughness_n96_load<double>,
 #                                                &wavecontact::generated::roughness_n96_legendre<double>});
-# - PROFILE: a user profile y(x) (wavecontact-derive --profile, derive/user_profile.hpp) into
+# - PROFILE: a user profile y(x) (wavecontact-derive --profile, derive/formulas/user_profile.hpp) into
 #   profile_<name>.hpp. Register it:
 #     wavecontact::register_profile(wavecontact::generated::<name>_profile_evaluator());
 # Needs WAVECONTACT_DERIVE_EXECUTABLE (set by find_package(wavecontact)). An optional
