@@ -22,7 +22,7 @@ foreach(line IN LISTS lines)
     set(symbol "${CMAKE_MATCH_1}")
     # DW.ref.__gxx_personality_v0 is data, the same pointer in every unit (AddressSanitizer's
     # stack cleanups ask for it): no instruction of the unit's ISA.
-    if(NOT symbol MATCHES "^wavecontact::detail::(simd_pressure|simd_add_roughness_pressure|simd_point_angles|simd_all_finite)_avx(2|512)\\(" AND
+    if(NOT symbol MATCHES "^wavecontact::detail::avx(2|512)::(simd_pressure|simd_add_roughness_pressure|simd_point_angles|simd_all_finite)\\(" AND
        NOT symbol STREQUAL "DW.ref.__gxx_personality_v0")
       message(FATAL_ERROR "a SIMD unit exports ${symbol}:\n  ${line}")
     endif()

@@ -4,8 +4,8 @@
 // Legendre coefficients, all in loops the compiler vectorises (pressure_simd_kernels.hpp); and
 // the check that an array's points are finite.
 // Built once per ISA in its own translation unit (pressure_simd_avx2.cpp: AVX2 + FMA;
-// pressure_simd_avx512.cpp: AVX-512F) and chosen at run time (array_kernel_isa()); other
-// CPUs take the scalar paths.
+// pressure_simd_avx512.cpp: AVX-512F; both from pressure_simd_unit.inc) and chosen at run
+// time (array_kernel_isa()); other CPUs take the scalar paths.
 #pragma once
 
 #include <cstddef>
@@ -52,20 +52,12 @@ void simd_point_angles(double b1, double a, const double* x, std::size_t count, 
 // Whether x[i], i < count, are all finite. As above.
 bool simd_all_finite(const double* x, std::size_t count);
 
-// The same per ISA: call only where the CPU has it.
-void simd_pressure_avx2(const WavinessZone& zone, Form form, const double* x, double* p,
-                        std::size_t count);
-void simd_pressure_avx512(const WavinessZone& zone, Form form, const double* x, double* p,
-                          std::size_t count);
-void simd_add_roughness_pressure_avx2(const RoughnessZone& zone, const double* x, double* p,
-                                      std::size_t count);
-void simd_add_roughness_pressure_avx512(const RoughnessZone& zone, const double* x, double* p,
-                                        std::size_t count);
-void simd_point_angles_avx2(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
-                            unsigned char* inside);
-void simd_point_angles_avx512(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
-                              unsigned char* inside);
-bool simd_all_finite_avx2(const double* x, std::size_t count);
-bool simd_all_finite_avx512(const double* x, std::size_t count);
+// The same per ISA.
+namespace avx2 {
+#include "pressure_simd_entry_points.inc"
+}  // namespace avx2
+namespace avx512 {
+#include "pressure_simd_entry_points.inc"
+}  // namespace avx512
 
 }  // namespace wavecontact::detail

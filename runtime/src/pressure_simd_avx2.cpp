@@ -1,24 +1,7 @@
-// Compiled with -mavx2 -mfma -O3 -fno-math-errno (runtime/CMakeLists.txt); called only where
-// the CPU has both (array_kernel_isa()).
+// The array kernels for AVX2 + FMA (flags in runtime/CMakeLists.txt), 4 points a vector;
+// called only where the CPU has both (array_kernel_isa()).
 #include "pressure_simd_kernels.hpp"
 
-namespace wavecontact::detail {
-
-void simd_pressure_avx2(const WavinessZone& zone, Form form, const double* x, double* p,
-                        std::size_t count) {
-  pressure_kernel(zone, form, x, p, count);
-}
-
-void simd_add_roughness_pressure_avx2(const RoughnessZone& zone, const double* x, double* p,
-                                      std::size_t count) {
-  add_roughness_kernel(zone, x, p, count);
-}
-
-void simd_point_angles_avx2(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
-                           unsigned char* inside) {
-  point_angles_kernel(b1, a, x, count, angles, inside);
-}
-
-bool simd_all_finite_avx2(const double* x, std::size_t count) { return all_finite_kernel(x, count); }
-
-}  // namespace wavecontact::detail
+namespace wavecontact::detail::avx2 {
+#include "pressure_simd_unit.inc"
+}  // namespace wavecontact::detail::avx2

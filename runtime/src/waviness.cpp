@@ -113,25 +113,25 @@ bool simd_pressure_available() { return array_kernel_isa() != Isa::scalar; }
 
 void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p,
                    std::size_t count) {
-  if (array_kernel_isa() == Isa::avx512) return simd_pressure_avx512(zone, form, x, p, count);
-  simd_pressure_avx2(zone, form, x, p, count);
+  if (array_kernel_isa() == Isa::avx512) return avx512::simd_pressure(zone, form, x, p, count);
+  avx2::simd_pressure(zone, form, x, p, count);
 }
 
 void simd_point_angles(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
                        unsigned char* inside) {
-  if (array_kernel_isa() == Isa::avx512) return simd_point_angles_avx512(b1, a, x, count, angles, inside);
-  simd_point_angles_avx2(b1, a, x, count, angles, inside);
+  if (array_kernel_isa() == Isa::avx512) return avx512::simd_point_angles(b1, a, x, count, angles, inside);
+  avx2::simd_point_angles(b1, a, x, count, angles, inside);
 }
 
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
                                  std::size_t count) {
-  if (array_kernel_isa() == Isa::avx512) return simd_add_roughness_pressure_avx512(zone, x, p, count);
-  simd_add_roughness_pressure_avx2(zone, x, p, count);
+  if (array_kernel_isa() == Isa::avx512) return avx512::simd_add_roughness_pressure(zone, x, p, count);
+  avx2::simd_add_roughness_pressure(zone, x, p, count);
 }
 
 bool simd_all_finite(const double* x, std::size_t count) {
-  if (array_kernel_isa() == Isa::avx512) return simd_all_finite_avx512(x, count);
-  return simd_all_finite_avx2(x, count);
+  if (array_kernel_isa() == Isa::avx512) return avx512::simd_all_finite(x, count);
+  return avx2::simd_all_finite(x, count);
 }
 
 }  // namespace detail
