@@ -134,6 +134,11 @@ bool simd_all_finite(const double* x, std::size_t count) {
   return avx2::simd_all_finite(x, count);
 }
 
+bool all_finite(const double* x, std::size_t count) {
+  if (simd_pressure_available()) return simd_all_finite(x, count);
+  return std::all_of(x, x + count, [](double v) { return std::isfinite(v); });
+}
+
 }  // namespace detail
 
 double pa_over_pstar(const WavinessParams& params, double a, Form form) {
