@@ -127,7 +127,8 @@ void BM_contact_many_zones_bem(benchmark::State& state) {
   constexpr int finest = 1 << 18;
   const double reference = test::bem_contact(y, 1.0, k.P, finest, kinks).contact_fraction;
   int grid = 1024;
-  while (grid < finest && std::fabs(test::bem_contact(y, 1.0, k.P, grid, kinks).contact_fraction - reference) > 1e-4) grid *= 2;
+  while (grid < finest && std::fabs(test::bem_contact(y, 1.0, k.P, grid, kinks).contact_fraction - reference) > 1e-4)
+    grid *= 2;
   test::BemContact b{};
   for (auto _ : state) {
     b = test::bem_contact(y, 1.0, k.P, grid, kinks);

@@ -39,25 +39,21 @@ void derive_whole(benchmark::State& state, const GiNaC::ex& y) {
 void BM_derive_profile_harmonic(benchmark::State& state) {
   derive_profile_file(state, "H*cos(" + std::to_string(state.range(0)) + "*x)");
 }
-BENCHMARK(BM_derive_profile_harmonic)->RangeMultiplier(2)->Range(8, 256)
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_derive_profile_harmonic)->RangeMultiplier(2)->Range(8, 256)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_derive_profile_power(benchmark::State& state) {
   derive_profile_file(state, "H*cos(x)^" + std::to_string(state.range(0)));
 }
-BENCHMARK(BM_derive_profile_power)->RangeMultiplier(2)->Range(8, 256)
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_derive_profile_power)->RangeMultiplier(2)->Range(8, 256)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_derive_whole_harmonic(benchmark::State& state) {
   derive_whole(state, H() * GiNaC::cos(state.range(0) * derive::sym::x()));
 }
-BENCHMARK(BM_derive_whole_harmonic)->RangeMultiplier(2)->Range(8, 32)
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_derive_whole_harmonic)->RangeMultiplier(2)->Range(8, 32)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 void BM_derive_whole_power(benchmark::State& state) {
   derive_whole(state, H() * GiNaC::pow(GiNaC::cos(derive::sym::x()), state.range(0)));
 }
-BENCHMARK(BM_derive_whole_power)->RangeMultiplier(2)->Range(8, 32)
-    ->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_derive_whole_power)->RangeMultiplier(2)->Range(8, 32)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

@@ -9,8 +9,8 @@
 
 namespace wavecontact::bench {
 
-void plain_waviness_pressure(double E, double H1, double b1, double m, double a, const double* x,
-                             double* p, std::size_t count) {
+void plain_waviness_pressure(double E, double H1, double b1, double m, double a, const double* x, double* p,
+                             std::size_t count) {
   const double pi = 3.14159265358979323846;
   const double Ca = std::cos(pi * a / b1), k = pi / (4 * b1) * E * H1 * (1 + m);
   for (std::size_t i = 0; i < count; ++i) {

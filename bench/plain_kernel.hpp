@@ -6,7 +6,7 @@
 
 namespace wavecontact::bench {
 
-void plain_waviness_pressure(double E, double H1, double b1, double m, double a, const double* x,
-                             double* p, std::size_t count);
+void plain_waviness_pressure(double E, double H1, double b1, double m, double a, const double* x, double* p,
+                             std::size_t count);
 
 }  // namespace wavecontact::bench

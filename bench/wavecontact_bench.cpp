@@ -12,9 +12,9 @@
 #include <Eigen/Core>
 #include <boost/math/constants/constants.hpp>
 
-#include "emit/generate.hpp"   // derive/
+#include "emit/generate.hpp"       // derive/
 #include "formulas/roughness.hpp"  // derive/
-#include "kinked_reference.hpp"  // tests/
+#include "kinked_reference.hpp"    // tests/
 #include "plain_kernel.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/numerical_inversion.hpp"
@@ -46,8 +46,7 @@ double waviness_rhs(double v) {
 // The smallest node count (doubling) at which the numerical inversion agrees with the
 // closed form to `tolerance` (relative to scale) at 16 points: equal accuracy.
 template <typename Rhs, typename Closed>
-int nodes_for_accuracy(const Rhs& rhs, const Closed& closed, double a, double b1, double scale,
-                       double tolerance) {
+int nodes_for_accuracy(const Rhs& rhs, const Closed& closed, double a, double b1, double scale, double tolerance) {
   const double alpha = std::tan(pi * a / (2 * b1));
   for (int nodes = 8;; nodes *= 2) {
     double worst = 0;
@@ -98,8 +97,8 @@ void BM_waviness_pressure_scalar_libm(benchmark::State& state) {
     for (Eigen::Index i = 0; i < xs.size(); ++i) {
       const double r = std::fabs(xs[i]), half = std::sin(pi * r / (2 * b1));
       const double D = 2 * std::sin(pi * (a + r) / (2 * b1)) * std::sin(pi * (a - r) / (2 * b1));
-      p[i] = r < a ? generated::waviness_pressure_exact(waviness.E, waviness.H1, b1, waviness.m, zone.Ca,
-                                                        zone.Sa, std::cos(pi * r / b1), 2 * half * half, D)
+      p[i] = r < a ? generated::waviness_pressure_exact(waviness.E, waviness.H1, b1, waviness.m, zone.Ca, zone.Sa,
+                                                        std::cos(pi * r / b1), 2 * half * half, D)
                    : 0.0;
     }
     benchmark::DoNotOptimize(p.data());
@@ -117,8 +116,8 @@ void BM_waviness_pressure_plain_fast_math(benchmark::State& state) {
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
   Eigen::ArrayXd p(xs.size());
   for (auto _ : state) {
-    bench::plain_waviness_pressure(waviness.E, waviness.H1, waviness.b1, waviness.m, half_width,
-                                   xs.data(), p.data(), static_cast<std::size_t>(xs.size()));
+    bench::plain_waviness_pressure(waviness.E, waviness.H1, waviness.b1, waviness.m, half_width, xs.data(), p.data(),
+                                   static_cast<std::size_t>(xs.size()));
     benchmark::DoNotOptimize(p.data());
   }
   state.SetItemsProcessed(state.iterations() * xs.size());
@@ -132,8 +131,8 @@ void BM_waviness_pressure_no_cse(benchmark::State& state) {
     Eigen::ArrayXd p(xs.size());
     for (Eigen::Index i = 0; i < xs.size(); ++i) {
       const PointAngles point = point_angles(std::fabs(xs[i]), half_width, waviness.b1);
-      p[i] = bench::waviness_pressure_csrc(waviness.E, waviness.H1, waviness.b1, waviness.m, zone.Ca,
-                                           zone.Sa, point.Cx, point.Sx, point.D);
+      p[i] = bench::waviness_pressure_csrc(waviness.E, waviness.H1, waviness.b1, waviness.m, zone.Ca, zone.Sa, point.Cx,
+                                           point.Sx, point.D);
     }
     benchmark::DoNotOptimize(p.data());
   }
@@ -146,8 +145,8 @@ void BM_waviness_pressure_numerical(benchmark::State& state) {
   const double alpha = std::tan(pi * half_width / (2 * waviness.b1));
   const double scale = pressure(waviness, half_width, 0.0);
   const int nodes = nodes_for_accuracy(
-      waviness_rhs, [](double x) { return pressure(waviness, half_width, x); }, half_width,
-      waviness.b1, scale, 64 * 2.220446049250313e-16);
+      waviness_rhs, [](double x) { return pressure(waviness, half_width, x); }, half_width, waviness.b1, scale,
+      64 * 2.220446049250313e-16);
   for (auto _ : state) {
     double sum = 0;
     for (Eigen::Index i = 0; i < xs.size(); ++i) {
@@ -256,8 +255,8 @@ void pressure_points(benchmark::State& state, const std::vector<double>& xs, boo
   for (auto _ : state) {
     double sum = 0;
     for (double x : xs) {
-      sum += quadrature ? static_cast<double>(wave_curve_reference_pressure(waviness.m, pi * a / waviness.b1,
-                                                                            pi * x / waviness.b1))
+      sum += quadrature ? static_cast<double>(
+                              wave_curve_reference_pressure(waviness.m, pi * a / waviness.b1, pi * x / waviness.b1))
                         : pressure(waviness, a, x);
     }
     benchmark::DoNotOptimize(sum);
@@ -344,8 +343,8 @@ BENCHMARK(BM_regenerate_default)->Iterations(1)->Unit(benchmark::kSecond);
 
 // The user's alternative: SymPy doing the same expansion (bench/sympy_kcoef.py).
 void BM_sympy_kcoefficients(benchmark::State& state) {
-  const std::string command = "python3 " WAVECONTACT_SYMPY_BASELINE " " +
-                              std::to_string(state.range(0)) + " > /dev/null 2>&1";
+  const std::string command =
+      "python3 " WAVECONTACT_SYMPY_BASELINE " " + std::to_string(state.range(0)) + " > /dev/null 2>&1";
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     if (std::system(command.c_str()) != 0) {

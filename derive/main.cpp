@@ -44,28 +44,24 @@ int main(int argc, char** argv) {
                  "(2 <= n <= 4096, repeatable); without it, everything in generated/");
   std::string expression, name;
   std::vector<std::string> parameters;
-  auto* profile = app.add_option(
-      "--profile", expression,
-      "a user profile y(x) over the period 2 pi of x = pi x/b1, even in x, rational in "
-      "cos(k x) and sin(k x) (GiNaC syntax, e.g. \"H1*cos(x)+H3*cos(3*x)\"): writes "
-      "profile_<NAME>.hpp and profile_<NAME>_manifest.txt. Bounded: at most 2000 "
-      "characters, parentheses 16 deep, numbers of 20 digits, exponents integer literals "
-      "|n| <= 256, order (cos(k x) counts k) <= 256 in the numerator and <= 32 in the "
-      "denominator, 8 parameters; beyond, refused (exit 2)");
-  auto* profile_name =
-      app.add_option("--name", name, "the profile's name, a C++ identifier (with --profile)");
-  auto* parameter = app.add_option(
-      "--param", parameters,
-      "a parameter of the profile, NAME or NAME=SAMPLE (repeatable): SAMPLE, a typical "
-      "value (default 1/2), fixes the signs of square roots in the emitted form");
+  auto* profile = app.add_option("--profile", expression,
+                                 "a user profile y(x) over the period 2 pi of x = pi x/b1, even in x, rational in "
+                                 "cos(k x) and sin(k x) (GiNaC syntax, e.g. \"H1*cos(x)+H3*cos(3*x)\"): writes "
+                                 "profile_<NAME>.hpp and profile_<NAME>_manifest.txt. Bounded: at most 2000 "
+                                 "characters, parentheses 16 deep, numbers of 20 digits, exponents integer literals "
+                                 "|n| <= 256, order (cos(k x) counts k) <= 256 in the numerator and <= 32 in the "
+                                 "denominator, 8 parameters; beyond, refused (exit 2)");
+  auto* profile_name = app.add_option("--name", name, "the profile's name, a C++ identifier (with --profile)");
+  auto* parameter = app.add_option("--param", parameters,
+                                   "a parameter of the profile, NAME or NAME=SAMPLE (repeatable): SAMPLE, a typical "
+                                   "value (default 1/2), fixes the signs of square roots in the emitted form");
   double max_seconds = 60;
   long max_memory_mb = 4096;
   app.add_option("--max-seconds", max_seconds,
                  "time budget of the derivation, 0 < s <= 86400: beyond it, exit 4 and nothing written")
       ->capture_default_str()
       ->check(CLI::Range(1e-3, 86400.0));
-  app.add_option("--max-memory-mb", max_memory_mb,
-                 "memory budget (address space) of the derivation: beyond it, exit 4")
+  app.add_option("--max-memory-mb", max_memory_mb, "memory budget (address space) of the derivation: beyond it, exit 4")
       ->capture_default_str()
       ->check(CLI::Range(64L, 1L << 20));
   profile->needs(profile_name);
@@ -90,8 +86,9 @@ int main(int argc, char** argv) {
         spec.parameters.push_back(derive::parse_parameter(p));
         command += " --param " + p;
       }
-      const derive::ResourceBudget budget(max_seconds, max_memory_mb,
-                                          "profile " + name + " = \"" + wavecontact::cli_common::shortened(expression) + "\"");
+      const derive::ResourceBudget budget(
+          max_seconds, max_memory_mb,
+          "profile " + name + " = \"" + wavecontact::cli_common::shortened(expression) + "\"");
       files = derive::generate_profile(spec, command + " --name " + name + " --out DIR");
     } else {
       const derive::ResourceBudget budget(max_seconds, max_memory_mb, "the generated set");

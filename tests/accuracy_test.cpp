@@ -25,9 +25,9 @@
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
 
-using wavecontact::test::PhysicalPoint;
 using wavecontact::test::error_in_eps;
 using wavecontact::test::evaluate;
+using wavecontact::test::PhysicalPoint;
 
 namespace {
 
@@ -43,8 +43,8 @@ const wavecontact::derive::WavinessDerivation& waviness() {
 std::vector<PhysicalPoint> domain_points() {
   const std::vector<double> ms{0, 1e-3, 0.2, 0.5, 1, 2, 10, 100, 1e3, 1e4};
   const std::vector<double> a_fractions{1e-4, 0.01, 0.1, 0.25, 0.4, 0.49, 0.4999999, 0.5};
-  const std::vector<double> x_fractions{0,   1e-3, 0.1,  0.3,  0.5,       0.7,        0.9,
-                                        0.99, 0.999, 1 - 1e-6, 1 - 1e-9, 1 - 3e-9, 0.25, 0.6, 0.95};
+  const std::vector<double> x_fractions{0,     1e-3,     0.1,      0.3,      0.5,  0.7, 0.9, 0.99,
+                                        0.999, 1 - 1e-6, 1 - 1e-9, 1 - 3e-9, 0.25, 0.6, 0.95};
   const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
   std::vector<PhysicalPoint> points;
   std::size_t k = 0;
@@ -73,9 +73,8 @@ struct ErrorReport {
   }
   std::string summary() const {
     std::ostringstream os;
-    os << std::setprecision(4) << name << ": " << count << " points, max " << max
-       << " eps, mean " << sum / count << " eps, worst at m = " << worst.m
-       << ", a/b1 = " << worst.a / worst.b1 << ", x/a = " << worst.x / worst.a
+    os << std::setprecision(4) << name << ": " << count << " points, max " << max << " eps, mean " << sum / count
+       << " eps, worst at m = " << worst.m << ", a/b1 = " << worst.a / worst.b1 << ", x/a = " << worst.x / worst.a
        << ", b1 = " << worst.b1;
     return os.str();
   }
@@ -101,12 +100,8 @@ BOOST_AUTO_TEST_CASE(pressure_within_64_eps) {
     const auto v = p.v_variables();
     const auto reference = evaluate(d.pressure_v.at(0), v);
     const auto paper_reference = evaluate(d.paper_pressure_v.at(0), v);
-    exact.add(error_in_eps(wavecontact::pressure(params, p.a, p.x, wavecontact::Form::exact),
-                           reference),
-              p);
-    paper.add(error_in_eps(wavecontact::pressure(params, p.a, p.x, wavecontact::Form::paper),
-                           paper_reference),
-              p);
+    exact.add(error_in_eps(wavecontact::pressure(params, p.a, p.x, wavecontact::Form::exact), reference), p);
+    paper.add(error_in_eps(wavecontact::pressure(params, p.a, p.x, wavecontact::Form::paper), paper_reference), p);
     Eigen::ArrayXd xs(5);
     xs << 2 * p.b1, p.x, -p.x, 4 * p.b1, p.x;
     const Eigen::ArrayXd got = wavecontact::pressure(params, p.a, xs, wavecontact::Form::exact);
@@ -132,9 +127,7 @@ BOOST_AUTO_TEST_CASE(load_within_64_eps) {
     const wavecontact::WavinessParams params{p.H1, p.b1, p.m, p.E};
     const auto v = p.v_variables();
     load.add(error_in_eps(wavecontact::load(params, p.a), evaluate(d.load_v.at(0), v)), p);
-    ratio.add(error_in_eps(wavecontact::pa_over_pstar(params, p.a),
-                           evaluate(d.pa_over_pstar_v.at(0), v)),
-              p);
+    ratio.add(error_in_eps(wavecontact::pa_over_pstar(params, p.a), evaluate(d.pa_over_pstar_v.at(0), v)), p);
   }
   check(load);
   check(ratio);
@@ -144,13 +137,12 @@ namespace {
 
 // A closed form of sub-interval moment terms (c sqrt(r) I_{j,l}(z) in angle atoms) at 40
 // digits, the atoms from the exact a and b1: Ca = cos(pi a/b1), Sa = 1 - Ca.
-GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTerm>& terms,
-                                const PhysicalPoint& p) {
+GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTerm>& terms, const PhysicalPoint& p) {
   using wavecontact::test::exact;
   namespace sym = wavecontact::derive::sym;
   const GiNaC::numeric Ca = GiNaC::cos(GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * exact(p.a) / exact(p.b1)).evalf()));
-  GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::E(), exact(p.E)},
-                     {sym::H1(), exact(p.H1)}, {sym::m(), exact(p.m)}};
+  GiNaC::exmap point{
+      {sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::E(), exact(p.E)}, {sym::H1(), exact(p.H1)}, {sym::m(), exact(p.m)}};
   return GiNaC::ex_to<GiNaC::numeric>(wavecontact::derive::as_ex(terms).subs(point).evalf());
 }
 
@@ -179,8 +171,8 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
                 p);
       if (fa < 1) {  // dP/da = (pi/b1) sin(pi a/b1) F vanishes at a = b1
         const GiNaC::numeric F = evaluate_moments(d.beyond_half.load_slope_factor, p);
-        const GiNaC::numeric angle = GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi * wavecontact::test::exact(p.a) /
-                                                                   wavecontact::test::exact(b1)).evalf());
+        const GiNaC::numeric angle = GiNaC::ex_to<GiNaC::numeric>(
+            (GiNaC::Pi * wavecontact::test::exact(p.a) / wavecontact::test::exact(b1)).evalf());
         const GiNaC::numeric dPda =
             GiNaC::ex_to<GiNaC::numeric>((GiNaC::Pi / wavecontact::test::exact(b1)).evalf()) * GiNaC::sin(angle) * F;
         slope.add(error_in_eps(wavecontact::load_slope(params, p.a), dPda), p);
@@ -206,16 +198,26 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
   wavecontact::test::Precision precision(wavecontact::test::reference_digits);
   const auto& beyond = waviness().beyond_half;
   ErrorReport top{"pressure, a > b1/2, |x| < b1/2"}, flank{"pressure, a > b1/2, |x| > b1/2"};
-  ErrorReport array_top{"pressure (array), a > b1/2, |x| < b1/2"}, array_flank{"pressure (array), a > b1/2, |x| > b1/2"};
+  ErrorReport array_top{"pressure (array), a > b1/2, |x| < b1/2"},
+      array_flank{"pressure (array), a > b1/2, |x| > b1/2"};
   const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
   std::size_t k = 0;
   for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 35.0, 100.0, 1e3, 1e4}) {
     for (double fa : {0.5000001, 0.501, 0.55, 0.6, 0.75, 0.9, 0.99, 0.9999}) {
       const auto& [E, H1, b1] = scales[k++ % scales.size()];
       const double a = fa * b1;
-      std::vector<double> xs{0, 0.2 * b1, 0.45 * b1, 0.5 * b1 * (1 - 1e-3), 0.5 * b1 * (1 - 1e-9),
-                             std::nextafter(0.5 * b1, 0.0), std::nextafter(0.5 * b1, b1), 0.5 * b1 * (1 + 1e-9),
-                             0.5 * b1 * (1 + 1e-3), (0.5 + fa) / 2 * b1, a * (1 - 1e-6), a * (1 - 1e-12)};
+      std::vector<double> xs{0,
+                             0.2 * b1,
+                             0.45 * b1,
+                             0.5 * b1 * (1 - 1e-3),
+                             0.5 * b1 * (1 - 1e-9),
+                             std::nextafter(0.5 * b1, 0.0),
+                             std::nextafter(0.5 * b1, b1),
+                             0.5 * b1 * (1 + 1e-9),
+                             0.5 * b1 * (1 + 1e-3),
+                             (0.5 + fa) / 2 * b1,
+                             a * (1 - 1e-6),
+                             a * (1 - 1e-12)};
       if (m > 1) {  // around the other branch's pole, cos(pi x/b1) = +-1/m
         for (double side : {1.0, -1.0}) {
           for (double shift : {0.0, 1e-6, -1e-6, 0.1, -0.1, 0.2, -0.2}) {
@@ -238,11 +240,14 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
       }
       Eigen::ArrayXd spread(4000 + references.size());
       for (int i = 0; i < 4000; ++i) spread[i] = a * (i + 0.5) / 4000;
-      for (std::size_t i = 0; i < references.size(); ++i) spread[4000 + static_cast<Eigen::Index>(i)] = references[i].first.x;
+      for (std::size_t i = 0; i < references.size(); ++i)
+        spread[4000 + static_cast<Eigen::Index>(i)] = references[i].first.x;
       const Eigen::ArrayXd array = wavecontact::pressure(params, a, spread);
       for (std::size_t i = 0; i < references.size(); ++i) {
         const auto& [p, reference] = references[i];
-        const auto error = [&](double got) { return (GiNaC::abs(wavecontact::test::exact(got) - reference) / scale).to_double() / 2.220446049250313e-16; };
+        const auto error = [&](double got) {
+          return (GiNaC::abs(wavecontact::test::exact(got) - reference) / scale).to_double() / 2.220446049250313e-16;
+        };
         (p.x < 0.5 * b1 ? top : flank).add(error(wavecontact::pressure(params, a, p.x)), p);
         (p.x < 0.5 * b1 ? array_top : array_flank).add(error(array[4000 + static_cast<Eigen::Index>(i)]), p);
       }
@@ -262,7 +267,8 @@ BOOST_AUTO_TEST_CASE(full_contact_of_eq2_within_64_eps) {
   wavecontact::test::Precision precision(wavecontact::test::reference_digits);
   namespace derive = wavecontact::derive;
   const auto specs = derive::example_profiles();
-  const auto spec = std::find_if(specs.begin(), specs.end(), [](const auto& p) { return p.name == "parametric_wave_curve"; });
+  const auto spec =
+      std::find_if(specs.begin(), specs.end(), [](const auto& p) { return p.name == "parametric_wave_curve"; });
   BOOST_TEST_REQUIRE((spec != specs.end()));
   const derive::ProfileDerivation d = derive::derive_profile(*spec);
   ErrorReport top{"full contact, eq. 2, |x| < b1/2"}, flank{"full contact, eq. 2, |x| >= b1/2"};
@@ -271,12 +277,24 @@ BOOST_AUTO_TEST_CASE(full_contact_of_eq2_within_64_eps) {
   for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 35.0, 100.0, 1e3, 1e4}) {
     const auto& [E, H1, b1] = scales[k++ % scales.size()];
     const wavecontact::Profile profile({"parametric_wave_curve", {{"H1", H1}, {"m", m}}, b1, E});
-    std::vector<double> xs{0, 1e-9 * b1, 0.2 * b1, 0.45 * b1, 0.5 * b1 * (1 - 1e-3), 0.5 * b1 * (1 - 1e-9),
-                           std::nextafter(0.5 * b1, 0.0), 0.5 * b1, std::nextafter(0.5 * b1, b1),
-                           0.5 * b1 * (1 + 1e-9), 0.5 * b1 * (1 + 1e-3), 0.8 * b1, b1 * (1 - 1e-9), b1};
+    std::vector<double> xs{0,
+                           1e-9 * b1,
+                           0.2 * b1,
+                           0.45 * b1,
+                           0.5 * b1 * (1 - 1e-3),
+                           0.5 * b1 * (1 - 1e-9),
+                           std::nextafter(0.5 * b1, 0.0),
+                           0.5 * b1,
+                           std::nextafter(0.5 * b1, b1),
+                           0.5 * b1 * (1 + 1e-9),
+                           0.5 * b1 * (1 + 1e-3),
+                           0.8 * b1,
+                           b1 * (1 - 1e-9),
+                           b1};
     if (m > 1) {  // the other branch's poles, cos(pi x/b1) = +-1/m
       for (double side : {1.0, -1.0}) {
-        for (double shift : {0.0, 1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3}) xs.push_back(std::acos(side / m * (1 + shift)) / M_PI * b1);
+        for (double shift : {0.0, 1e-9, -1e-9, 1e-6, -1e-6, 1e-3, -1e-3})
+          xs.push_back(std::acos(side / m * (1 + shift)) / M_PI * b1);
       }
     }
     std::vector<std::pair<double, GiNaC::numeric>> references;
@@ -291,8 +309,10 @@ BOOST_AUTO_TEST_CASE(full_contact_of_eq2_within_64_eps) {
       const GiNaC::ex& form = GiNaC::abs(Cx) < GiNaC::numeric(1, 1000000) ? d.full_contact_pressure
                               : Cx > 0                                    ? d.full_contact_pressure_top
                                                                           : d.full_contact_pressure_flank;
-      const GiNaC::exmap point{{derive::sym::E(), wavecontact::test::exact(E)}, {derive::sym::b1(), wavecontact::test::exact(b1)},
-                               {d.parameters[0], wavecontact::test::exact(H1)}, {d.parameters[1], wavecontact::test::exact(m)},
+      const GiNaC::exmap point{{derive::sym::E(), wavecontact::test::exact(E)},
+                               {derive::sym::b1(), wavecontact::test::exact(b1)},
+                               {d.parameters[0], wavecontact::test::exact(H1)},
+                               {d.parameters[1], wavecontact::test::exact(m)},
                                {derive::sym::Cx(), Cx}};
       references.emplace_back(x, GiNaC::ex_to<GiNaC::numeric>(form.subs(point).evalf()));
       scale = std::max(scale, GiNaC::abs(references.back().second));
@@ -338,14 +358,14 @@ GiNaC::numeric roughness_reference(int n, double E, double H2, double b1, double
   for (int k = 1; k < n; ++k) P.push_back(((2 * k + 1) * ca * P[k] - k * P[k - 1]) / (k + 1));
   numeric sum = 0;
   for (int j = 0; j < n; ++j) sum += P[n - 1 - j] * GiNaC::cos((j + numeric(1, 2)) * xhat);
-  const numeric scale = GiNaC::ex_to<numeric>((GiNaC::Pi / b * exact(E) * exact(H2) * n / GiNaC::sqrt(numeric(2))).evalf());
+  const numeric scale =
+      GiNaC::ex_to<numeric>((GiNaC::Pi / b * exact(E) * exact(H2) * n / GiNaC::sqrt(numeric(2))).evalf());
   return scale * GiNaC::sqrt(GiNaC::cos(xhat) - ca) * sum;
 }
 
 double parse_rational(const std::string& k) {
   const auto slash = k.find('/');
-  return slash == std::string::npos ? std::stod(k)
-                                    : std::stod(k.substr(0, slash)) / std::stod(k.substr(slash + 1));
+  return slash == std::string::npos ? std::stod(k) : std::stod(k.substr(0, slash)) / std::stod(k.substr(slash + 1));
 }
 
 }  // namespace
@@ -381,9 +401,8 @@ BOOST_AUTO_TEST_CASE(roughness_within_1e12_of_scale) {
       for (const auto& kj : k) power *= w, sum += parse_rational(kj) * v * power;
       naive_worst = std::max(naive_worst, std::abs(sum - std::sin(n * 2 * std::atan(v)) / n));
     }
-    BOOST_TEST_MESSAGE("n = " << n << ": roughness pressure max error " << worst << " (array API "
-                              << array_worst << ") x E*H2 n pi/b1; naive eq. 18 sum max error "
-                              << naive_worst << " (|s(v)| <= 1/n)");
+    BOOST_TEST_MESSAGE("n = " << n << ": roughness pressure max error " << worst << " (array API " << array_worst
+                              << ") x E*H2 n pi/b1; naive eq. 18 sum max error " << naive_worst << " (|s(v)| <= 1/n)");
     BOOST_TEST(worst <= 1e-12, "n = " << n << ": " << worst);
     BOOST_TEST(array_worst <= 1e-12, "n = " << n << ", array API: " << array_worst);
   }

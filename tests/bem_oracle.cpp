@@ -55,8 +55,8 @@ class Influence {
 // j, extrapolated to its root. The window stays inside the zone and off the profile's kinks
 // (where p has an s log s term); in a zone too short for it, the gap g >= 0 beyond j, which
 // grows like (x - e)^(3/2), from the second and third points out.
-double edge(const std::vector<double>& p, const std::vector<double>& g, int j, int direction, double h,
-            int inner_limit, const std::vector<double>& kinks) {
+double edge(const std::vector<double>& p, const std::vector<double>& g, int j, int direction, double h, int inner_limit,
+            const std::vector<double>& kinks) {
   const int M = static_cast<int>(p.size());
   int far = 40;
   for (double k : kinks) {
@@ -125,7 +125,8 @@ BemContact bem_contact(const std::function<double(double)>& y, double E, double 
     G_old = G;
     K.apply(t, r);
     double r_mean = 0;
-    for (int i = 0; i < M; ++i) if (p[i] > 0) r_mean += r[i];
+    for (int i = 0; i < M; ++i)
+      if (p[i] > 0) r_mean += r[i];
     r_mean /= active;
     double gt = 0, rt = 0;
     for (int i = 0; i < M; ++i) {
@@ -185,7 +186,8 @@ BemContact bem_contact(const std::function<double(double)>& y, double E, double 
   // (mirrored at 0 and pi) where that parabola is concave: a smooth peak; the pressure can
   // also peak in a cusp (at a kink of the profile), where the grid value is the estimate.
   int best = 0;
-  for (int i = 0; i <= half; ++i) if (p[i] > p[best]) best = i;
+  for (int i = 0; i <= half; ++i)
+    if (p[i] > p[best]) best = i;
   const double left = p[(best - 1 + M) % M], right = p[(best + 1) % M], mid = p[best];
   const double curvature = left - 2 * mid + right;
   c.max_pressure = mid;
@@ -223,9 +225,9 @@ BemEstimate bem_extrapolated(const std::function<double(double)>& y, double E, d
   const BemContact a = bem_contact(y, E, P, M, kinks), b = bem_contact(y, E, P, 2 * M, kinks),
                    c = bem_contact(y, E, P, 4 * M, kinks);
   if (a.zone_ends.size() != b.zone_ends.size() || b.zone_ends.size() != c.zone_ends.size()) {
-    throw std::runtime_error("bem_extrapolated: the grids find " + std::to_string(a.zone_ends.size() / 2) +
-                             ", " + std::to_string(b.zone_ends.size() / 2) + " and " +
-                             std::to_string(c.zone_ends.size() / 2) + " zones");
+    throw std::runtime_error("bem_extrapolated: the grids find " + std::to_string(a.zone_ends.size() / 2) + ", " +
+                             std::to_string(b.zone_ends.size() / 2) + " and " + std::to_string(c.zone_ends.size() / 2) +
+                             " zones");
   }
   BemEstimate e{};
   const double resolution = 2 * pi / (4 * M) / 50;

@@ -45,9 +45,7 @@ Profile kinked(double H, double c) {
 // The reference's own view of the profile: y = H C + s c (5C - 3)^2, s = +1 on the top
 // (|x| < kink) and -1 beyond; G = -(1/2) y' = (1/2) sin x (H + 10 s c (5 cos x - 3)).
 long double reference(long double H, long double c, long double a, long double x) {
-  const auto G = [&](long double xi, int s) {
-    return std::sin(xi) * (H + 10 * s * c * (5 * std::cos(xi) - 3)) / 2;
-  };
+  const auto G = [&](long double xi, int s) { return std::sin(xi) * (H + 10 * s * c * (5 * std::cos(xi) - 3)) / 2; };
   const auto G_prime = [&](long double xi, int s) {
     const long double sine = std::sin(xi);
     return (std::cos(xi) * (H + 10 * s * c * (5 * std::cos(xi) - 3)) - 50 * s * c * sine * sine) / 2;
@@ -68,8 +66,8 @@ BOOST_AUTO_TEST_CASE(pressure_agrees_with_an_independent_quadrature) {
         const double got = profile.pressure(a, x), expected = static_cast<double>(reference(1, c, a, x));
         const double error = std::fabs(got - expected) / std::fabs(expected);
         worst = std::max(worst, error);
-        BOOST_TEST(error < 1e-10, "c = " << c << ", a = " << a << ", x = " << x << ": got " << got
-                                         << ", expected " << expected);
+        BOOST_TEST(error < 1e-10,
+                   "c = " << c << ", a = " << a << ", x = " << x << ": got " << got << ", expected " << expected);
       }
     }
   }
@@ -85,8 +83,8 @@ BOOST_AUTO_TEST_CASE(load_and_slope_beyond_the_branch_point) {
       const auto integrand = [&](double phi) { return 2 * profile.pressure(a, a * std::sin(phi)) * a * std::cos(phi); };
       using Rule = boost::math::quadrature::gauss_kronrod<double, 31>;
       const double split = a > kink ? std::asin(kink / a) : pi / 4;
-      const double quadrature = Rule::integrate(integrand, 0, split, 8, 1e-13) +
-                                Rule::integrate(integrand, split, pi / 2, 8, 1e-13);
+      const double quadrature =
+          Rule::integrate(integrand, 0, split, 8, 1e-13) + Rule::integrate(integrand, split, pi / 2, 8, 1e-13);
       // The pressure's slope is log-singular at the kink, which limits this quadrature.
       BOOST_TEST(profile.load(a) == quadrature, tt::tolerance(2e-10));
       const double h = 1e-5 * a;
@@ -101,10 +99,10 @@ BOOST_AUTO_TEST_CASE(load_and_slope_beyond_the_branch_point) {
       BOOST_TEST(std::fabs(profile.load(above) - profile.load(below)) <=
                      1e-10 * std::fabs(P) + 2 * std::fabs(slope) * (above - below),
                  "c = " << c << ", offset " << offset);
-      BOOST_TEST(std::fabs(profile.load_slope(above) - profile.load_slope(below)) <=
-                     20 * std::sqrt(offset) * std::fabs(slope),
-                 "c = " << c << ", offset " << offset << ": " << profile.load_slope(above) << " vs "
-                        << profile.load_slope(below));
+      BOOST_TEST(
+          std::fabs(profile.load_slope(above) - profile.load_slope(below)) <= 20 * std::sqrt(offset) * std::fabs(slope),
+          "c = " << c << ", offset " << offset << ": " << profile.load_slope(above) << " vs "
+                 << profile.load_slope(below));
     }
     BOOST_TEST(std::isfinite(profile.load(pi)));  // full contact
     BOOST_TEST(profile.reach() == pi);
@@ -149,7 +147,8 @@ BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
     const auto y = [&](long double x) { return 0.7L * (m + 1) * std::cos(x) / (m * std::cos(x) + 1); };
     double worst = 0, scale = 0;
     for (double x : {0.0, 1.0, 3.0, 5.0, 7.5, 10.0, -4.0}) {
-      const double expected = P / (2 * b1) + E / 2 * pi / b1 * static_cast<double>(fourier_slope_sum(y, pi * x / b1, 512));
+      const double expected =
+          P / (2 * b1) + E / 2 * pi / b1 * static_cast<double>(fourier_slope_sum(y, pi * x / b1, 512));
       worst = std::max(worst, std::fabs(profile.full_contact_pressure(P, x) - expected));
       scale = std::max(scale, std::fabs(expected));
     }
@@ -168,9 +167,10 @@ BOOST_AUTO_TEST_CASE(full_contact_of_a_rational_profile) {
 // which each branch's formula has a pole on the other piece, and a kinked user profile).
 BOOST_AUTO_TEST_CASE(full_contact_agrees_with_the_contact_solver) {
   kinked(1, 1);  // registers
-  for (const Profile& profile : {Profile({"analytic_wave", {{"H1", 0.7}, {"m", 0.5}}, 10.0, 2.0}),
-                                 Profile({"parametric_wave_curve", {{"H1", 0.7}, {"m", 0.5}}, 10.0, 2.0}),
-                                 Profile({"parametric_wave_curve", {{"H1", 0.7}, {"m", 3.0}}, 10.0, 2.0}), kinked(1, 0.2)}) {
+  for (const Profile& profile :
+       {Profile({"analytic_wave", {{"H1", 0.7}, {"m", 0.5}}, 10.0, 2.0}),
+        Profile({"parametric_wave_curve", {{"H1", 0.7}, {"m", 0.5}}, 10.0, 2.0}),
+        Profile({"parametric_wave_curve", {{"H1", 0.7}, {"m", 3.0}}, 10.0, 2.0}), kinked(1, 0.2)}) {
     const std::string name = profile.params().name;
     const double b1 = profile.params().b1;
     const wavecontact::Surface surface(profile);
@@ -179,9 +179,10 @@ BOOST_AUTO_TEST_CASE(full_contact_agrees_with_the_contact_solver) {
     for (int i = 1; i <= 200; ++i) {
       if (p_fc(b1 * i / 200) < lowest) lowest = p_fc(b1 * i / 200), x_min = b1 * i / 200;
     }
-    const double onset = -2 * b1 *
-                         boost::math::tools::brent_find_minima(p_fc, std::max(0.0, x_min - b1 / 200),
-                                                               std::min(b1, x_min + b1 / 200), 52).second;
+    const double onset =
+        -2 * b1 *
+        boost::math::tools::brent_find_minima(p_fc, std::max(0.0, x_min - b1 / 200), std::min(b1, x_min + b1 / 200), 52)
+            .second;
     BOOST_TEST(wavecontact::full_contact_load(surface) == onset, name << ": " << tt::tolerance(1e-9));
     const double P = 1.5 * onset;
     const wavecontact::Contact contact = wavecontact::solve_contact(surface, P);
@@ -216,7 +217,9 @@ BOOST_AUTO_TEST_CASE(full_contact_of_profiles_built_with_abs) {
     BOOST_TEST(worst <= 3e-5 * scale, "m = " << m << ": " << worst / scale);
   }
   const Profile profile = kinked(1, 0.2);  // b1 = pi, E* = 1
-  const auto y = [](long double x) { return std::cos(x) + 0.2L * (5 * std::cos(x) - 3) * std::fabs(5 * std::cos(x) - 3); };
+  const auto y = [](long double x) {
+    return std::cos(x) + 0.2L * (5 * std::cos(x) - 3) * std::fabs(5 * std::cos(x) - 3);
+  };
   double worst = 0, scale = 0;
   for (double x : {0.0, 0.5, kink, 1.5, 2.5, pi}) {
     const double expected = static_cast<double>(fourier_slope_sum(y, x, 4096)) / 2;

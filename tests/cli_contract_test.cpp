@@ -74,12 +74,13 @@ BOOST_AUTO_TEST_CASE(reproduce_checks_gnuplot_and_its_png) {
   BOOST_TEST(truncated.status == 5, truncated.err);
   BOOST_TEST(truncated.err.find("fig1.png is not a whole PNG") != std::string::npos, truncated.err);
   BOOST_TEST(truncated.err.find("wrote") == std::string::npos, truncated.err);
-  const CommandResult missing = run_command({WAVECONTACT_CLI, "reproduce", "--out", (base / "out").string(),
-                                             "--figures", "fig1"},
-                                            {"", {"PATH=" + (base / "empty").string()}});
+  const CommandResult missing =
+      run_command({WAVECONTACT_CLI, "reproduce", "--out", (base / "out").string(), "--figures", "fig1"},
+                  {"", {"PATH=" + (base / "empty").string()}});
   BOOST_TEST(missing.status == 5, missing.err);
   BOOST_TEST(missing.err.find("cannot run gnuplot") != std::string::npos, missing.err);
-  const CommandResult real = run_command({WAVECONTACT_CLI, "reproduce", "--out", (base / "one").string(), "--figures", "fig1"});
+  const CommandResult real =
+      run_command({WAVECONTACT_CLI, "reproduce", "--out", (base / "one").string(), "--figures", "fig1"});
   BOOST_TEST(real.status == 0, real.err);
   BOOST_TEST(fs::exists(base / "one" / "fig1.png"));
   BOOST_TEST(!fs::exists(base / "one" / "fig2.png"));
@@ -135,7 +136,8 @@ BOOST_AUTO_TEST_CASE(max_p_is_the_largest_pressure) {
   const CommandResult scan = run("pressure " + B + " --H2 0.15 --n 16 --pa-over-pstar 0.6 --x " + xs);
   BOOST_TEST_REQUIRE(scan.status == 0, scan.err);
   double highest = 0;
-  for (std::size_t i = 1; i < lines(scan.out).size(); ++i) highest = std::fmax(highest, fields(lines(scan.out)[i]).at(1));
+  for (std::size_t i = 1; i < lines(scan.out).size(); ++i)
+    highest = std::fmax(highest, fields(lines(scan.out)[i]).at(1));
   BOOST_TEST(highest > 0.5683811);
   BOOST_TEST(max_p >= highest * (1 - estimate) - 1e-15, "max_p " << max_p << " below the scan's " << highest);
 }
@@ -180,7 +182,8 @@ BOOST_AUTO_TEST_CASE(the_edges_of_the_domain_are_refused_with_their_range) {
   const double at_far = fields(lines(far.out).at(1)).at(1), at_minus_4 = fields(lines(far.out).at(2)).at(1);
   BOOST_TEST(at_far > 0);
   BOOST_TEST(at_far == at_minus_4);
-  BOOST_TEST(fields(lines(far.out).at(3)).at(1) == fields(lines(run("pressure " + B + " --a 4.5 --x 0").out).at(1)).at(1));
+  BOOST_TEST(fields(lines(far.out).at(3)).at(1) ==
+             fields(lines(run("pressure " + B + " --a 4.5 --x 0").out).at(1)).at(1));
 }
 
 // Item 10: messages name the true thing, once, briefly.

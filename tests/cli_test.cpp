@@ -54,8 +54,7 @@ const std::string profile = "--H1 1 --b1 " + b1 + " --E 1";
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(pressure_prints_check_values) {
-  const Result r = run("pressure " + profile + " --m 2 --a " + number(0.45 * M_PI) + " --x 0," +
-                       number(0.1));
+  const Result r = run("pressure " + profile + " --m 2 --a " + number(0.45 * M_PI) + " --x 0," + number(0.1));
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   const auto rows = lines(r.out);
   BOOST_TEST_REQUIRE(rows.size() == 3u);
@@ -67,14 +66,13 @@ BOOST_AUTO_TEST_CASE(pressure_prints_check_values) {
   // 17 significant digits.
   BOOST_TEST(rows[1].substr(rows[1].find(',') + 1, 19) == "0.53751179298044172");
 
-  const Result paper = run("pressure " + profile + " --m 10 --a " + number(0.45 * M_PI) +
-                           " --x 0 --form paper");
+  const Result paper = run("pressure " + profile + " --m 10 --a " + number(0.45 * M_PI) + " --x 0 --form paper");
   BOOST_TEST_REQUIRE(paper.status == 0, paper.err);
   BOOST_TEST(fields(lines(paper.out).at(1)).at(1) == 0.2532608275678914, tt::tolerance(1e-13));
 
   // By load: the contact (one zone here, a = 0.4 b1), with the gap.
-  const Result by_load = run("pressure " + profile + " --m 5 --P 0.6548011577944177 --x " +
-                             number(0.1 * M_PI) + "," + number(0.6 * M_PI));
+  const Result by_load =
+      run("pressure " + profile + " --m 5 --P 0.6548011577944177 --x " + number(0.1 * M_PI) + "," + number(0.6 * M_PI));
   BOOST_TEST_REQUIRE(by_load.status == 0, by_load.err);
   BOOST_TEST(lines(by_load.out).at(0) == "x,p,gap");
   BOOST_TEST(fields(lines(by_load.out).at(1)).at(1) == 0.2569750078646253, tt::tolerance(1e-11));
@@ -201,31 +199,31 @@ BOOST_AUTO_TEST_CASE(curve_has_a_row_per_point) {
 
 BOOST_AUTO_TEST_CASE(bad_arguments_exit_2_with_one_line_and_no_output) {
   const std::vector<std::string> bad{
-      "pressure " + profile + " --m 2 --a 4 --x 0",              // a >= b1
-      "pressure " + profile + " --m -1 --a 1 --x 0",             // m < 0
-      "pressure " + profile + " --m 2 --x 0",                    // no zone
-      "pressure " + profile + " --m 2 --a 1 --P 1 --x 0",        // two zones
-      "pressure --H1 1 --b1 3 --m 2 --a 1 --x 0",                // no modulus
-      "pressure " + profile + " --m 2 --a 1 --x zero",           // not a number
-      "pressure " + profile + " --m 2 --a 1 --x 0 --form fancy", // bad form
-      "load " + profile + " --m 2 --a 1 --a 1.2",                // repeated option
-      "load " + profile + " --m 2 --a 1 --colour red",           // unknown option
-      "load --H1 0 --b1 3 --E 1 --m 2 --a 1",                    // H1 = 0
-      "load --H1 1 --b1 3 --E 1 --m 2 --a nan",                  // not finite
-      "solve " + profile + " --m 2 --P 0",                       // P = 0
-      "solve " + profile + " --m 2 --P 1,-1",                    // a negative load
-      "solve " + profile + " --m 2 --P 1 --pa-over-pstar 1",     // two kinds of load
-      "solve " + profile + " --m 2 --P 1 --tolerance 0",         // tolerance out of range
-      "solve " + profile + " --m 2 --P 1 --form paper",          // paper without --single-zone
-      "contact " + profile + " --m 2 --P 1,2",                   // contact takes one load
-      "contact " + profile + " --m 2 --P 1 --H2 0.1,0.2 --n 8",  // as many --H2 as --n
+      "pressure " + profile + " --m 2 --a 4 --x 0",                        // a >= b1
+      "pressure " + profile + " --m -1 --a 1 --x 0",                       // m < 0
+      "pressure " + profile + " --m 2 --x 0",                              // no zone
+      "pressure " + profile + " --m 2 --a 1 --P 1 --x 0",                  // two zones
+      "pressure --H1 1 --b1 3 --m 2 --a 1 --x 0",                          // no modulus
+      "pressure " + profile + " --m 2 --a 1 --x zero",                     // not a number
+      "pressure " + profile + " --m 2 --a 1 --x 0 --form fancy",           // bad form
+      "load " + profile + " --m 2 --a 1 --a 1.2",                          // repeated option
+      "load " + profile + " --m 2 --a 1 --colour red",                     // unknown option
+      "load --H1 0 --b1 3 --E 1 --m 2 --a 1",                              // H1 = 0
+      "load --H1 1 --b1 3 --E 1 --m 2 --a nan",                            // not finite
+      "solve " + profile + " --m 2 --P 0",                                 // P = 0
+      "solve " + profile + " --m 2 --P 1,-1",                              // a negative load
+      "solve " + profile + " --m 2 --P 1 --pa-over-pstar 1",               // two kinds of load
+      "solve " + profile + " --m 2 --P 1 --tolerance 0",                   // tolerance out of range
+      "solve " + profile + " --m 2 --P 1 --form paper",                    // paper without --single-zone
+      "contact " + profile + " --m 2 --P 1,2",                             // contact takes one load
+      "contact " + profile + " --m 2 --P 1 --H2 0.1,0.2 --n 8",            // as many --H2 as --n
       "pressure " + profile + " --m 2 --a 1 --H2 0.1,0.1 --n 8,16 --x 0",  // --a: one harmonic
-      "solve --single-zone " + profile + " --m 2 --P 1e9",       // no single zone carries it
+      "solve --single-zone " + profile + " --m 2 --P 1e9",                 // no single zone carries it
       "load --H1 1 --b1 3 --m 1 --a 1 --E1 2 --nu1 0.7 --E2 3 --nu2 0.3",  // nu1 > 0.5
-      "load " + profile + " --m 2 --a 1 --H2 0.1",               // --H2 without --n
-      "load " + profile + " --m 2 --a 1 --H2 0.1 --n 7",         // odd n
-      "load " + profile + " --m 2 --a 1 --H2 -0.1 --n 8",        // negative H2
-      "frobnicate",                                              // unknown subcommand
+      "load " + profile + " --m 2 --a 1 --H2 0.1",                         // --H2 without --n
+      "load " + profile + " --m 2 --a 1 --H2 0.1 --n 7",                   // odd n
+      "load " + profile + " --m 2 --a 1 --H2 -0.1 --n 8",                  // negative H2
+      "frobnicate",                                                        // unknown subcommand
   };
   for (const auto& arguments : bad) {
     const Result r = run(arguments);
@@ -246,7 +244,8 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png_into_any_path) {
   BOOST_TEST_REQUIRE(r.status == 0, r.err);
   BOOST_TEST(!fs::exists("PWNED"));
   BOOST_TEST(!fs::exists(base / "PWNED"));
-  for (const char* figure : {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11"}) {
+  for (const char* figure :
+       {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11"}) {
     for (const char* extension : {".csv", ".png"}) {
       const fs::path file = out / (std::string(figure) + extension);
       BOOST_TEST(fs::exists(file), file);
@@ -351,8 +350,9 @@ BOOST_AUTO_TEST_CASE(user_profile_commands) {
   const Result mixed = run("load " + sine + " --H1 1 --a 3");
   BOOST_TEST(mixed.status == 2);
   // Eq. 2 as an expression beyond b1/2: docs/mathematics.md fact 8, m = 2, a = 0.6 b1, P = 3.0393833648235.
-  const Result beyond = run("load --profile-name parametric_wave_curve --param H1=1 --param m=2 "
-                            "--b1 10 --E 1 --a 6");
+  const Result beyond =
+      run("load --profile-name parametric_wave_curve --param H1=1 --param m=2 "
+          "--b1 10 --E 1 --a 6");
   BOOST_TEST(beyond.status == 0, beyond.err);
   BOOST_TEST(beyond.out.find("3.03938336482") != std::string::npos, beyond.out);
 }

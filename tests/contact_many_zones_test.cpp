@@ -87,7 +87,8 @@ BOOST_AUTO_TEST_CASE(four_scales_to_n_256) {
 
 BOOST_AUTO_TEST_CASE(wave_curve_m10_with_roughness_in_the_valley) {
   for (double ratio : {1.0, 2.0}) {
-    const Case k{"m = 10, H2 = 0.03, n = 128, pa/p* = " + std::to_string(ratio), 10, {{0.03, 128}}, ratio * pi, 16384, 50};
+    const Case k{
+        "m = 10, H2 = 0.03, n = 128, pa/p* = " + std::to_string(ratio), 10, {{0.03, 128}}, ratio * pi, 16384, 50};
     const Contact c = check_against_oracle(k, 1e-8);
     if (ratio == 1.0) confirm_by_refining(k, c);
   }

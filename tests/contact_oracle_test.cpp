@@ -24,8 +24,8 @@
 #include "wavecontact/waviness.hpp"
 
 using namespace wavecontact;
-using wavecontact::test::BemEstimate;
 using wavecontact::test::agree;
+using wavecontact::test::BemEstimate;
 using wavecontact::test::compare;
 using wavecontact::test::kinks;
 using wavecontact::test::two_scale_profile;
@@ -48,9 +48,8 @@ BOOST_AUTO_TEST_CASE(oracle_reproduces_the_closed_forms) {
     const std::string name = "m = " + std::to_string(m);
     agree(bem.zone_ends[1], a, bem.zone_ends_error[1], 0, name + ", zone end");
     agree(bem.p0, pressure(w, a, 0), bem.p0_error, 0, name + ", p(0)");
-    BOOST_TEST_MESSAGE("oracle, " << name << ": end " << bem.zone_ends[1] << " +- " << bem.zone_ends_error[1]
-                                  << " vs " << a << ", p(0) " << bem.p0 << " +- " << bem.p0_error << " vs "
-                                  << pressure(w, a, 0));
+    BOOST_TEST_MESSAGE("oracle, " << name << ": end " << bem.zone_ends[1] << " +- " << bem.zone_ends_error[1] << " vs "
+                                  << a << ", p(0) " << bem.p0 << " +- " << bem.p0_error << " vs " << pressure(w, a, 0));
   }
 }
 
@@ -61,8 +60,14 @@ BOOST_AUTO_TEST_CASE(fig7_parameters) {
     int n;
     double ratio;
   };
-  for (const Case& k : std::vector<Case>{{0, 8, 0.05}, {0, 8, 0.3}, {0, 8, 0.6}, {10, 8, 0.1}, {10, 8, 0.3},
-                                         {0, 16, 0.1}, {0, 16, 0.4}, {10, 16, 0.2}}) {
+  for (const Case& k : std::vector<Case>{{0, 8, 0.05},
+                                         {0, 8, 0.3},
+                                         {0, 8, 0.6},
+                                         {10, 8, 0.1},
+                                         {10, 8, 0.3},
+                                         {0, 16, 0.1},
+                                         {0, 16, 0.4},
+                                         {10, 16, 0.2}}) {
     const double P = k.ratio * pi;
     const Contact c = solve_contact(Surface(TwoScaleParams{{1, 10, k.m, 1}, {0.15, k.n}}), P);
     const BemEstimate bem = test::bem_extrapolated(two_scale_profile(1, k.m, 0.15, k.n), 1.0, P, grid, kinks(k.m));
@@ -97,8 +102,8 @@ BOOST_AUTO_TEST_CASE(dimpled_profile) {
   const Profile profile({"two_harmonic", {{"H1", 1.0}, {"H3", -0.2}}, 10.0, 1.0});
   for (double P : {0.05, 0.5}) {
     const Contact c = solve_contact(Surface(profile), P);
-    const BemEstimate bem = test::bem_extrapolated(
-        [](double x) { return std::cos(x) - 0.2 * std::cos(3 * x); }, 1.0, P, grid);
+    const BemEstimate bem =
+        test::bem_extrapolated([](double x) { return std::cos(x) - 0.2 * std::cos(3 * x); }, 1.0, P, grid);
     compare(c, bem, 10, "two_harmonic H3 = -0.2, P = " + std::to_string(P));
   }
 }
@@ -125,9 +130,9 @@ BOOST_AUTO_TEST_CASE(valley_at_the_end_of_the_gap_panels) {
   std::vector<double> loads;
   for (int i = 1; i <= 18; ++i) loads.push_back(0.15 * i);
   const std::vector<Contact> sweep = solve_contact(Surface(WavinessParams{1, 10, 0, 1}, {{0.1, 4}, {0.01, 24}}), loads);
-  const BemEstimate bem = test::bem_extrapolated(
-      [](double x) { return std::cos(x) + 0.1 * std::cos(4 * x) + 0.01 * std::cos(24 * x); }, 1.0, loads.back(),
-      2 * grid);
+  const BemEstimate bem =
+      test::bem_extrapolated([](double x) { return std::cos(x) + 0.1 * std::cos(4 * x) + 0.01 * std::cos(24 * x); },
+                             1.0, loads.back(), 2 * grid);
   compare(sweep.back(), bem, 10, "n = 4 and 24, P = 2.7");
 }
 

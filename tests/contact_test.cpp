@@ -70,8 +70,7 @@ BOOST_AUTO_TEST_CASE(wave_curve_single_zone_is_the_closed_form) {
       }
     }
   }
-  BOOST_TEST_MESSAGE("wave curve, a <= b1/2: zone end " << worst_end << " of b1, pressure " << worst_p
-                                                       << " of max p");
+  BOOST_TEST_MESSAGE("wave curve, a <= b1/2: zone end " << worst_end << " of b1, pressure " << worst_p << " of max p");
 }
 
 // Beyond b1/2 the single zone is the contact while the valley stays open: m = 0.5 all the
@@ -147,7 +146,7 @@ BOOST_AUTO_TEST_CASE(full_contact_is_the_fourier_solution) {
 
 // docs/mathematics.md fact 11 / the issue: onset of full contact of the wave curve, pa/p*.
 BOOST_AUTO_TEST_CASE(full_contact_onset_of_the_wave_curve) {
-  const std::vector<std::pair<double, double>> onset{{0.0, 1.0}, {0.7, 0.878}, {1.0, 0.891},
+  const std::vector<std::pair<double, double>> onset{{0.0, 1.0},   {0.7, 0.878},  {1.0, 0.891},
                                                      {2.0, 1.154}, {10.0, 3.975}, {35.0, 12.97}};
   for (const auto& [m, ratio] : onset) {
     const WavinessParams w{1.0, 10.0, m, 1.0};
@@ -222,8 +221,7 @@ BOOST_AUTO_TEST_CASE(snap_through_goes_to_two_zones_then_full_contact) {
   BOOST_TEST(LoadCurve(w).maximum_load() / pi == 1.80, tt::tolerance(5e-3));
   BOOST_TEST(single_zone_check(Surface(w), 4.87).solution);
   BOOST_TEST(!single_zone_check(Surface(w), 4.88).solution);
-  const std::vector<Contact> sweep =
-      solve_contact(Surface(w), {0.97 * pi, 0.98 * pi, 1.9 * pi, 3.9 * pi, 4.5 * pi});
+  const std::vector<Contact> sweep = solve_contact(Surface(w), {0.97 * pi, 0.98 * pi, 1.9 * pi, 3.9 * pi, 4.5 * pi});
   BOOST_TEST(sweep[0].zones_per_period() == 1);
   BOOST_TEST(sweep[1].zones_per_period() == 2);
   BOOST_TEST(sweep[2].zones_per_period() == 2);

@@ -38,8 +38,7 @@ std::string refusal(const std::string& text) {
 void refused_with(const std::string& text, const std::string& part) {
   const std::string message = refusal(text);
   BOOST_TEST(message.find(part) != std::string::npos,
-             "input: " << text << "\n  expected a refusal containing: " << part
-                       << "\n  got: " << message);
+             "input: " << text << "\n  expected a refusal containing: " << part << "\n  got: " << message);
 }
 
 std::string repeated(const std::string& text, int times) {
@@ -63,8 +62,8 @@ BOOST_AUTO_TEST_CASE(length_and_nesting_are_bounded) {
   refused_with(at_limit + "+0", "more than 2000");
 
   const std::string open = repeated("(", limits::max_nesting), close = repeated(")", limits::max_nesting);
-  BOOST_TEST(refusal(repeated("(", limits::max_nesting - 1) + "cos(x)" +
-                     repeated(")", limits::max_nesting - 1)) == "accepted");
+  BOOST_TEST(refusal(repeated("(", limits::max_nesting - 1) + "cos(x)" + repeated(")", limits::max_nesting - 1)) ==
+             "accepted");
   refused_with(open + "cos(x)" + close, "parentheses nest deeper than 16");
   refused_with("cos(x))", "unbalanced \")\"");
   refused_with("((cos(x)", "unbalanced \"(\": 2 not closed");
@@ -151,8 +150,8 @@ BOOST_AUTO_TEST_CASE(profiles_kept_whole_are_bounded_at_their_order) {
     BOOST_FAIL("order 17 kept whole accepted");
   } catch (const InputRefused& e) {
     BOOST_TEST(std::string(e.what()).find("its order in cos x is 17, beyond 16 for a profile "
-                                          "whose denominator's leading coefficient") !=
-               std::string::npos, e.what());
+                                          "whose denominator's leading coefficient") != std::string::npos,
+               e.what());
   }
   // With a numeric leading coefficient, the cosine sum is split off: order 256 is accepted.
   BOOST_CHECK_NO_THROW(derive_profile({"p", "cos(x)^256/(2*cos(x)+3)", {}}));
@@ -165,8 +164,7 @@ BOOST_AUTO_TEST_CASE(profiles_name_the_input_and_bound_the_parameters) {
     derive_profile({"p", "H0*cos(x)", nine});
     BOOST_FAIL("nine parameters accepted");
   } catch (const InputRefused& e) {
-    BOOST_TEST(std::string(e.what()) ==
-               "profile p = \"H0*cos(x)\": 9 parameters, more than 8");
+    BOOST_TEST(std::string(e.what()) == "profile p = \"H0*cos(x)\": 9 parameters, more than 8");
   }
   BOOST_CHECK_THROW(parse_parameter("H=1e99"), InputRefused);
   BOOST_CHECK_THROW(parse_parameter("H=factorial(9999999)"), InputRefused);

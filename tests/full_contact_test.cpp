@@ -37,8 +37,8 @@ numeric square(const numeric& q) { return q * q; }
 numeric pi() { return GiNaC::ex_to<numeric>(GiNaC::Pi.evalf()); }
 
 // (E*/2)(pi/b1) times the conjugate function's derivative, at b1 = pi.
-numeric conjugate_slope(const std::function<numeric(const numeric&)>& slope, const numeric& x,
-                        const numeric& branch, const numeric& E) {
+numeric conjugate_slope(const std::function<numeric(const numeric&)>& slope, const numeric& x, const numeric& branch,
+                        const numeric& E) {
   std::vector<numeric> ends{-pi(), pi(), x};
   if (branch > 0) ends.insert(ends.end(), {-branch, branch});
   std::sort(ends.begin(), ends.end(), [](const numeric& a, const numeric& b) { return a < b; });
@@ -57,8 +57,8 @@ numeric conjugate_slope(const std::function<numeric(const numeric&)>& slope, con
 
 struct Case {
   std::string expression;
-  std::vector<ProfileParameter> parameters;  // the derivation's sample values (angle forms' signs)
-  std::vector<numeric> values;               // where the closed form is checked
+  std::vector<ProfileParameter> parameters;      // the derivation's sample values (angle forms' signs)
+  std::vector<numeric> values;                   // where the closed form is checked
   std::function<numeric(const numeric&)> slope;  // dy/dx^ at the parameters' values
   numeric branch;                                // x^ of the branch point, 0 if none
 };
@@ -101,9 +101,11 @@ void check_case(const Case& c, const std::vector<numeric>& xs) {
 BOOST_AUTO_TEST_CASE(rational_profile_is_the_quadrature) {
   const Digits digits(50);
   const numeric H(2, 3), m(1, 2);
-  check_case(Case{"H1*(m+1)*cos(x)/(m*cos(x)+1)", {{"H1", H}, {"m", m}}, {H, m},
-              [&](const numeric& xi) { return -H * (m + 1) * GiNaC::sin(xi) / square(m * GiNaC::cos(xi) + 1); },
-              numeric(0)},
+  check_case(Case{"H1*(m+1)*cos(x)/(m*cos(x)+1)",
+                  {{"H1", H}, {"m", m}},
+                  {H, m},
+                  [&](const numeric& xi) { return -H * (m + 1) * GiNaC::sin(xi) / square(m * GiNaC::cos(xi) + 1); },
+                  numeric(0)},
              {numeric(0), numeric(2, 5), numeric(2), numeric(3)});
 }
 
@@ -111,16 +113,19 @@ BOOST_AUTO_TEST_CASE(eq2_is_the_quadrature) {
   const Digits digits(50);
   const numeric H(2, 3), half_pi = pi() / 2;
   for (const numeric& m : {numeric(1, 2), numeric(2), numeric(35)}) {
-    std::vector<numeric> xs{numeric(0), numeric(2, 5), half_pi - numeric(1, 1000), half_pi,
-                            half_pi + numeric(1, 1000000), numeric(2), pi()};
+    std::vector<numeric> xs{
+        numeric(0), numeric(2, 5), half_pi - numeric(1, 1000), half_pi, half_pi + numeric(1, 1000000),
+        numeric(2), pi()};
     if (m > 1) {  // near the poles of the other branch's formula, cos x^ = 1/m (top) and -1/m (flank)
       for (const numeric& cosine : {1 / m, -1 / m}) xs.push_back(GiNaC::acos(cosine) + numeric(1, 10000));
     }
-    check_case(Case{"H1*(m+1)*cos(x)/(m*abs(cos(x))+1)", {{"H1", H}, {"m", numeric(1, 2)}}, {H, m},
-                [&](const numeric& xi) {
-                  return -H * (m + 1) * GiNaC::sin(xi) / square(m * GiNaC::abs(GiNaC::cos(xi)) + 1);
-                },
-                half_pi},
+    check_case(Case{"H1*(m+1)*cos(x)/(m*abs(cos(x))+1)",
+                    {{"H1", H}, {"m", numeric(1, 2)}},
+                    {H, m},
+                    [&](const numeric& xi) {
+                      return -H * (m + 1) * GiNaC::sin(xi) / square(m * GiNaC::abs(GiNaC::cos(xi)) + 1);
+                    },
+                    half_pi},
                xs);
   }
 }
@@ -128,10 +133,12 @@ BOOST_AUTO_TEST_CASE(eq2_is_the_quadrature) {
 BOOST_AUTO_TEST_CASE(kinked_profile_is_the_quadrature) {
   const Digits digits(50);
   const numeric H(1), c(1, 5), branch = GiNaC::acos(numeric(3, 5));
-  check_case(Case{"H*cos(x)+c*(5*cos(x)-3)*abs(5*cos(x)-3)", {{"H", H}, {"c", c}}, {H, c},
-              [&](const numeric& xi) {
-                return -H * GiNaC::sin(xi) - 10 * c * GiNaC::abs(5 * GiNaC::cos(xi) - 3) * GiNaC::sin(xi);
-              },
-              branch},
+  check_case(Case{"H*cos(x)+c*(5*cos(x)-3)*abs(5*cos(x)-3)",
+                  {{"H", H}, {"c", c}},
+                  {H, c},
+                  [&](const numeric& xi) {
+                    return -H * GiNaC::sin(xi) - 10 * c * GiNaC::abs(5 * GiNaC::cos(xi) - 3) * GiNaC::sin(xi);
+                  },
+                  branch},
              {numeric(1, 10), branch - numeric(1, 100000), branch + numeric(1, 100), numeric(2), numeric(31, 10)});
 }

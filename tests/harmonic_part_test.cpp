@@ -49,9 +49,13 @@ struct Digits {
 // points are equal).
 BOOST_AUTO_TEST_CASE(cosine_coefficients_reproduce_the_profile) {
   const Digits digits(50);
-  const std::vector<std::string> profiles{
-      "cos(x)^256", "cos(x)+cos(256*x)/4", "(cos(x)+1/3)^100", "sin(x)^2*cos(7*x)^10",
-      "sin(x)*sin(3*x)+cos(2*x)", "cos(x)^9+cos(x)/(2-cos(x))", "(cos(3*x)^5+1)/(3+cos(x))"};
+  const std::vector<std::string> profiles{"cos(x)^256",
+                                          "cos(x)+cos(256*x)/4",
+                                          "(cos(x)+1/3)^100",
+                                          "sin(x)^2*cos(7*x)^10",
+                                          "sin(x)*sin(3*x)+cos(2*x)",
+                                          "cos(x)^9+cos(x)/(2-cos(x))",
+                                          "(cos(3*x)^5+1)/(3+cos(x))"};
   for (const std::string& text : profiles) {
     const ex y = GiNaC::parser(GiNaC::symtab{{"x", sym::x()}})(text);
     const ex Y = in_cosine(y);
@@ -82,9 +86,9 @@ BOOST_AUTO_TEST_CASE(what_is_split_and_what_is_kept_whole) {
   BOOST_TEST(split_harmonic_part(c * c * c).rational.is_zero());
   const HarmonicSplit bump = split_harmonic_part(c * c / (2 - c));
   BOOST_TEST(bump.cosine.size() == 2u);
-  BOOST_TEST((bump.cosine[0] + bump.cosine[1] * c + bump.rational - c * c / (2 - c)).normal().is_zero(),
-             "T_0, T_1 and the rest of c^2/(2 - c): " << bump.cosine[0] << ", " << bump.cosine[1]
-                                                      << ", " << bump.rational);
+  BOOST_TEST(
+      (bump.cosine[0] + bump.cosine[1] * c + bump.rational - c * c / (2 - c)).normal().is_zero(),
+      "T_0, T_1 and the rest of c^2/(2 - c): " << bump.cosine[0] << ", " << bump.cosine[1] << ", " << bump.rational);
   // The wave curve's denominator m c + 1: its polynomial part would carry 1/m.
   const ex wave = H * (m + 1) * c / (m * c + 1);
   BOOST_TEST(split_harmonic_part(wave).cosine.empty());
@@ -141,8 +145,8 @@ BOOST_AUTO_TEST_CASE(split_equals_the_whole_profile_through_the_engine) {
         const numeric got = GiNaC::ex_to<numeric>(split.subs(point).evalf());
         const numeric want = GiNaC::ex_to<numeric>(expected.subs(point).evalf());
         const double relative = (GiNaC::abs(got - want) / GiNaC::abs(want)).to_double();
-        BOOST_TEST(relative < 1e-35, test.expression << " at Ca = " << Ca << ", Cx = " << Cx
-                                                     << ": split " << got << ", whole " << want);
+        BOOST_TEST(relative < 1e-35,
+                   test.expression << " at Ca = " << Ca << ", Cx = " << Cx << ": split " << got << ", whole " << want);
       }
     }
     // The profile and its slope: the cosine sum plus R is Y.

@@ -41,13 +41,19 @@ struct Case {
 std::vector<Case> cases() {
   const double H = 0.8, H1 = 1.0, H2 = 0.004, c = -0.05;
   return {
-      {"power256", {{"H", H}}, 256,
+      {"power256",
+       {{"H", H}},
+       256,
        [=](long double x) { return H * std::pow(std::cos(x), 256); },
        [=](long double x) { return -256 * H * std::pow(std::cos(x), 255) * std::sin(x); }},
-      {"two_scale256", {{"H1", H1}, {"H2", H2}}, 256,
+      {"two_scale256",
+       {{"H1", H1}, {"H2", H2}},
+       256,
        [=](long double x) { return H1 * std::cos(x) + H2 * std::cos(256 * x); },
        [=](long double x) { return -H1 * std::sin(x) - 256 * H2 * std::sin(256 * x); }},
-      {"bump64", {{"H", H}, {"c", c}}, 64,
+      {"bump64",
+       {{"H", H}, {"c", c}},
+       64,
        [=](long double x) { return H * std::pow(std::cos(x), 64) + c * std::cos(x) / (2 - std::cos(x)); },
        [=](long double x) {
          const long double q = 2 - std::cos(x);
@@ -69,8 +75,7 @@ Profile profile(const Case& test, double b1, double E) {
 
 // p^(u) of eq. 12 for g(v) = -(E/2) y'(x^(v)), |u| < alpha, in long double:
 // sqrt(alpha^2 - u^2) (1/pi) Int_0^pi (g(alpha cos theta) - g(u))/(alpha cos theta - u) dtheta.
-long double reference_pressure(const Case& test, long double E, long double alpha, long double u,
-                               int nodes) {
+long double reference_pressure(const Case& test, long double E, long double alpha, long double u, int nodes) {
   const auto g = [&](long double v) { return -E / 2 * test.y_prime(2 * std::atan(v)); };
   const long double gu = g(u);
   long double sum = 0;
@@ -103,8 +108,7 @@ BOOST_AUTO_TEST_CASE(pressure_against_the_numerical_inversion) {
         deviation = std::max(deviation, static_cast<double>(std::fabs(p.pressure(a, x) - fine)));
         scale = std::max(scale, static_cast<double>(std::fabs(fine)));
       }
-      BOOST_TEST(reference_change / scale <= 1e-15, test.name << ", a = " << a
-                                                         << ": the reference has not converged");
+      BOOST_TEST(reference_change / scale <= 1e-15, test.name << ", a = " << a << ": the reference has not converged");
       BOOST_TEST(deviation / scale <= 1e-12, test.name << ", a = " << a << ": " << deviation / scale);
       worst = std::max(worst, deviation / scale);
       worst_reference = std::max(worst_reference, reference_change / scale);
@@ -126,8 +130,8 @@ BOOST_AUTO_TEST_CASE(load_slope_and_height) {
       double quadrature = 0;
       const int panels = 2 * test.order;
       for (int i = 0; i < panels; ++i) {
-        quadrature += boost::math::quadrature::gauss<double, 30>::integrate(
-            integrand, M_PI / 2 * i / panels, M_PI / 2 * (i + 1) / panels);
+        quadrature += boost::math::quadrature::gauss<double, 30>::integrate(integrand, M_PI / 2 * i / panels,
+                                                                            M_PI / 2 * (i + 1) / panels);
       }
       BOOST_TEST(p.load(a) == quadrature, test.name << ", a = " << a << tt::tolerance(1e-11));
       // The load varies on a^/K: a fourth-order difference with steps of 1e-3 a/K.

@@ -21,12 +21,12 @@
 template <typename G_t, typename G_prime_t>
 long double kinked_reference_pressure(const G_t& G_on, const G_prime_t& G_prime, long double kink, long double a,
                                       long double x) {
+  using boost::math::long_double_constants::pi;
   using std::asin;
   using std::cos;
   using std::fabs;
   using std::sin;
   using std::sqrt;
-  using boost::math::long_double_constants::pi;
   const auto branch_of = [&](long double xi) { return fabs(xi) <= kink ? 1 : -1; };
   const auto G = [&](long double xi) { return G_on(xi, branch_of(xi)); };
   const int branch = branch_of(x);
@@ -58,9 +58,9 @@ long double kinked_reference_pressure(const G_t& G_on, const G_prime_t& G_prime,
     // Pieces narrower than 1e-6 next to the kink weigh less than their own rounding (G(xi) -
     // G(x) over xi - x down to 1e-12) lets the tolerance see: a few levels there.
     const long double mid = (breaks[i] + breaks[i - 1]) / 2, half = (breaks[i] - breaks[i - 1]) / 2;
-    sum += half * boost::math::quadrature::gauss_kronrod<long double, 61>::integrate(
-                      [&](long double t) { return integrand(mid + half * t); }, -1.0L, 1.0L,
-                      half > 1e-6L ? 10 : 3, 1e-15L);
+    sum += half *
+           boost::math::quadrature::gauss_kronrod<long double, 61>::integrate(
+               [&](long double t) { return integrand(mid + half * t); }, -1.0L, 1.0L, half > 1e-6L ? 10 : 3, 1e-15L);
   }
   return sqrt(cos(x) - cos(a)) / (sqrt(2.0L) * pi) * sum;
 }

@@ -82,8 +82,7 @@ BOOST_AUTO_TEST_CASE(m_zero_is_westergaard) {
     BOOST_TEST(wavecontact::pa_over_pstar(p, a) == sa * sa, tt::tolerance(1e-14));
     for (double fx : {0.0, 0.3, 0.8, 0.99}) {
       const double x = fx * a, sx = std::sin(pi * x / (2 * p.b1));
-      const double westergaard =
-          2 * pstar * std::cos(pi * x / (2 * p.b1)) * std::sqrt(sa * sa - sx * sx);
+      const double westergaard = 2 * pstar * std::cos(pi * x / (2 * p.b1)) * std::sqrt(sa * sa - sx * sx);
       for (Form form : {Form::exact, Form::paper}) {
         BOOST_TEST(wavecontact::pressure(p, a, x, form) == westergaard, tt::tolerance(1e-13));
       }
@@ -101,9 +100,9 @@ BOOST_AUTO_TEST_CASE(closed_form_agrees_with_numerical_inversion) {
         const double x = fx * a;
         const double closed = wavecontact::pressure(p, a, x);
         const double numerical = numerical_pressure(p, a, x, 4000);
-        BOOST_TEST(std::abs(closed - numerical) / scale <= 1e-12,
-                   "m = " << m << " a/b1 = " << fa << " x/a = " << fx << ": closed " << closed
-                          << ", numerical " << numerical);
+        BOOST_TEST(std::abs(closed - numerical) / scale <= 1e-12, "m = " << m << " a/b1 = " << fa << " x/a = " << fx
+                                                                         << ": closed " << closed << ", numerical "
+                                                                         << numerical);
       }
     }
   }
@@ -115,8 +114,7 @@ BOOST_AUTO_TEST_CASE(load_agrees_with_x_space_quadrature) {
     for (double fa : {0.02, 0.3, 0.5}) {
       const double a = fa * p.b1;
       BOOST_TEST(wavecontact::load(p, a) == load_by_quadrature(p, a), tt::tolerance(1e-12));
-      BOOST_TEST(wavecontact::mean_pressure(p, a) == wavecontact::load(p, a) / (2 * p.b1),
-                 tt::tolerance(1e-15));
+      BOOST_TEST(wavecontact::mean_pressure(p, a) == wavecontact::load(p, a) / (2 * p.b1), tt::tolerance(1e-15));
     }
   }
 }
@@ -155,15 +153,14 @@ BOOST_AUTO_TEST_CASE(inverse_load_is_monotone_and_bounded) {
     BOOST_TEST(P > previous);
     previous = P;
     BOOST_TEST(wavecontact::contact_half_width(p, P) == fa * p.b1, tt::tolerance(1e-13));
-    BOOST_TEST(wavecontact::contact_half_width_for_pa_over_pstar(
-                   p, wavecontact::pa_over_pstar(p, fa * p.b1)) == fa * p.b1,
-               tt::tolerance(1e-13));
+    BOOST_TEST(
+        wavecontact::contact_half_width_for_pa_over_pstar(p, wavecontact::pa_over_pstar(p, fa * p.b1)) == fa * p.b1,
+        tt::tolerance(1e-13));
     if (fa <= 0.5) {
       BOOST_TEST(wavecontact::single_asperity_half_width(p, P) == fa * p.b1, tt::tolerance(1e-13));
     }
   }
-  BOOST_CHECK_THROW(wavecontact::single_asperity_half_width(p, wavecontact::load(p, 5.0) * 1.001),
-                    std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::single_asperity_half_width(p, wavecontact::load(p, 5.0) * 1.001), std::domain_error);
   const double full = wavecontact::load(p, p.b1);
   BOOST_TEST(wavecontact::LoadCurve(p).full_contact_load() == full);
   BOOST_CHECK_THROW(wavecontact::contact_half_width(p, full * 1.001), std::domain_error);
@@ -193,24 +190,18 @@ BOOST_AUTO_TEST_CASE(domain_errors_name_function_parameter_and_value) {
   // The printed eq. 14 continued beyond b1/2 has a pole at cos(pi a/b1) = -1/m.
   const std::string pole = message([&] { wavecontact::pressure(p, 7.0, 0.0, Form::paper); });
   BOOST_TEST(pole.find("pole") != std::string::npos, pole);
-  const std::string negative_m =
-      message([&] { wavecontact::load(WavinessParams{1.0, 10.0, -1.0, 1.0}, 1.0); });
+  const std::string negative_m = message([&] { wavecontact::load(WavinessParams{1.0, 10.0, -1.0, 1.0}, 1.0); });
   BOOST_TEST(negative_m.find("wavecontact::load: m = -1") != std::string::npos, negative_m);
   BOOST_CHECK_THROW(wavecontact::pressure(p, 1.0, std::nan("")), std::domain_error);
-  BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{0.0, 10.0, 2.0, 1.0}, 1.0, 0.0),
-                    std::domain_error);
-  BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{1.0, -10.0, 2.0, 1.0}, 1.0, 0.0),
-                    std::domain_error);
-  BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{1.0, 10.0, 2.0, INFINITY}, 1.0, 0.0),
-                    std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{0.0, 10.0, 2.0, 1.0}, 1.0, 0.0), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{1.0, -10.0, 2.0, 1.0}, 1.0, 0.0), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::pressure(WavinessParams{1.0, 10.0, 2.0, INFINITY}, 1.0, 0.0), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::load(p, 0.0), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::zone_angles(11.0, 10.0), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::point_angles(2.0, 1.0, 10.0), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::point_angles(0.5, 1.0, 0.0), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::wave_curve(p, INFINITY), std::domain_error);
-  BOOST_CHECK_THROW(wavecontact::contact_half_width_for_pa_over_pstar(p, std::nan("")),
-                    std::domain_error);
-  BOOST_CHECK_THROW(wavecontact::numerical_inversion([](double v) { return v; }, 0.5, 0.7, 10),
-                    std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::contact_half_width_for_pa_over_pstar(p, std::nan("")), std::domain_error);
+  BOOST_CHECK_THROW(wavecontact::numerical_inversion([](double v) { return v; }, 0.5, 0.7, 10), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::contact_half_width(p, -1.0), std::domain_error);
 }

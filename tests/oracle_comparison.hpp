@@ -20,7 +20,8 @@
 namespace wavecontact::test {
 
 // Eqs. 1-3 over the normalised period: the wave curve and roughness harmonics (H, n).
-inline std::function<double(double)> surface_profile(double H1, double m, std::vector<std::pair<double, int>> harmonics) {
+inline std::function<double(double)> surface_profile(double H1, double m,
+                                                     std::vector<std::pair<double, int>> harmonics) {
   return [=](double x) {
     const double c = std::cos(x);
     double y = H1 * (m + 1) * c / (m * std::fabs(c) + 1);
@@ -39,9 +40,9 @@ inline std::vector<double> kinks(double m) { return m > 0 ? std::vector<double>{
 // |a - b| <= twice the oracle's estimate plus the solver's.
 inline void agree(double solver, double oracle, double oracle_error, double solver_error, const std::string& what) {
   const double allowed = 2 * oracle_error + solver_error;
-  BOOST_TEST(std::fabs(solver - oracle) <= allowed,
-             what << ": solver " << solver << ", oracle " << oracle << " +- " << oracle_error
-                  << " (difference " << std::fabs(solver - oracle) << ")");
+  BOOST_TEST(std::fabs(solver - oracle) <= allowed, what << ": solver " << solver << ", oracle " << oracle << " +- "
+                                                         << oracle_error << " (difference "
+                                                         << std::fabs(solver - oracle) << ")");
 }
 
 // The solver's contact (physical units, b1) against the oracle (normalised: x^ = pi x/b1,
@@ -59,9 +60,9 @@ inline void compare(const Contact& c, const BemEstimate& bem, double b1, const s
     ends.push_back(std::max(0.0, z.x_start) * to_x);
     ends.push_back(std::min(b1, z.x_end) * to_x);
   }
-  BOOST_TEST_REQUIRE(ends.size() == bem.zone_ends.size(),
-                     name << ": the solver has " << ends.size() / 2 << " zones in [0, b1], the oracle "
-                          << bem.zone_ends.size() / 2);
+  BOOST_TEST_REQUIRE(ends.size() == bem.zone_ends.size(), name << ": the solver has " << ends.size() / 2
+                                                               << " zones in [0, b1], the oracle "
+                                                               << bem.zone_ends.size() / 2);
   const double end_error = c.error_estimate() * 2 * pi;
   double worst = 0;
   for (std::size_t i = 0; i < ends.size(); ++i) {
@@ -70,13 +71,13 @@ inline void compare(const Contact& c, const BemEstimate& bem, double b1, const s
     worst = std::max(worst, std::fabs(ends[i] - bem.zone_ends[i]));
   }
   const double p_error = c.error_estimate() * c.max_pressure() * to_p;
-  agree(c.contact_fraction(), bem.contact_fraction, bem.contact_fraction_error, c.error_estimate(), name + ", contact fraction");
+  agree(c.contact_fraction(), bem.contact_fraction, bem.contact_fraction_error, c.error_estimate(),
+        name + ", contact fraction");
   agree(c.pressure(0) * to_p, bem.p0, bem.p0_error, p_error, name + ", p(0)");
   agree(c.max_pressure() * to_p, bem.max_pressure, bem.max_pressure_error, p_error, name + ", max p");
-  BOOST_TEST_MESSAGE(name << ": " << ends.size() / 2 << " zone(s) in [0, b1], ends within " << worst
-                          << " (x^), p(0) " << c.pressure(0) * to_p << " vs " << bem.p0 << " +- " << bem.p0_error
-                          << ", max p " << c.max_pressure() * to_p << " vs " << bem.max_pressure << " +- "
-                          << bem.max_pressure_error);
+  BOOST_TEST_MESSAGE(name << ": " << ends.size() / 2 << " zone(s) in [0, b1], ends within " << worst << " (x^), p(0) "
+                          << c.pressure(0) * to_p << " vs " << bem.p0 << " +- " << bem.p0_error << ", max p "
+                          << c.max_pressure() * to_p << " vs " << bem.max_pressure << " +- " << bem.max_pressure_error);
 }
 
 }  // namespace wavecontact::test

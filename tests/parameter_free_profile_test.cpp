@@ -48,12 +48,16 @@ BOOST_AUTO_TEST_CASE(parameter_free_profiles_derive_compile_and_invert) {
   wavecontact::register_profile(kinked_plain_profile_evaluator());
   wavecontact::register_profile(cos256_profile_evaluator());
   wavecontact::register_profile(cancelled_kink_profile_evaluator());
-  BOOST_TEST(deviation("plain", [](double x) { return -std::sin(x); }, 1.0) < 1e-12);
-  BOOST_TEST(deviation("squared_sine", [](double x) { return std::sin(2 * x); }, 1.0) < 1e-12);
-  BOOST_TEST(deviation("kinked_plain", [](double x) { return -std::sin(2 * x); }, 1.2) < 1e-12);
-  BOOST_TEST(deviation("cos256", [](double x) { return -256 * std::pow(std::cos(x), 255) * std::sin(x); }, 0.2) <
-             1e-11);
+  BOOST_TEST(deviation(
+                 "plain", [](double x) { return -std::sin(x); }, 1.0) < 1e-12);
+  BOOST_TEST(deviation(
+                 "squared_sine", [](double x) { return std::sin(2 * x); }, 1.0) < 1e-12);
+  BOOST_TEST(deviation(
+                 "kinked_plain", [](double x) { return -std::sin(2 * x); }, 1.2) < 1e-12);
+  BOOST_TEST(deviation(
+                 "cos256", [](double x) { return -256 * std::pow(std::cos(x), 255) * std::sin(x); }, 0.2) < 1e-11);
   // abs(cos x) abs(2 cos x) = 2 cos^2 x: the signs cancel, one branch (the expression fuzzer
   // found it ending in a logic_error, exit 1).
-  BOOST_TEST(deviation("cancelled_kink", [](double x) { return -std::sin(x) - 2 * std::sin(2 * x); }, 1.0) < 1e-12);
+  BOOST_TEST(deviation(
+                 "cancelled_kink", [](double x) { return -std::sin(x) - 2 * std::sin(2 * x); }, 1.0) < 1e-12);
 }

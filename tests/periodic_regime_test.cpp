@@ -28,7 +28,6 @@ using boost::math::double_constants::pi;
 // Normalised units of docs/mathematics.md: b1 = pi, H1 = E* = 1, so p is p^.
 WavinessParams normalised(double m) { return {1.0, pi, m, 1.0}; }
 
-
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(pressure_agrees_with_an_independent_quadrature) {
@@ -43,8 +42,8 @@ BOOST_AUTO_TEST_CASE(pressure_agrees_with_an_independent_quadrature) {
         const double expected = static_cast<double>(wave_curve_reference_pressure(m, a, x));
         const double error = std::abs(got - expected) / std::abs(expected);
         worst = std::max(worst, error);
-        BOOST_TEST(error < 1e-10, "m = " << m << ", a = " << fa << " b1, x = " << fx
-                                          << " a: got " << got << ", expected " << expected);
+        BOOST_TEST(error < 1e-10, "m = " << m << ", a = " << fa << " b1, x = " << fx << " a: got " << got
+                                         << ", expected " << expected);
       }
     }
   }
@@ -57,11 +56,11 @@ BOOST_AUTO_TEST_CASE(pressure_next_to_the_kink_and_the_edge) {
   for (double m : {2.0, 35.0}) {
     for (double a : {0.6 * pi, 0.9 * pi}) {
       const double kink = pi / 2;
-      for (double x : {std::nextafter(kink, 0.0), std::nextafter(kink, 4.0), kink * (1 - 1e-7),
-                       kink * (1 + 1e-7), kink * (1 - 1e-4), kink * (1 + 1e-4)}) {
-        BOOST_TEST(wavecontact::pressure(normalised(m), a, x) ==
-                       static_cast<double>(wave_curve_reference_pressure(m, a, x)),
-                   "m = " << m << ", a = " << a << ", x = " << x << tt::tolerance(1e-10));
+      for (double x : {std::nextafter(kink, 0.0), std::nextafter(kink, 4.0), kink * (1 - 1e-7), kink * (1 + 1e-7),
+                       kink * (1 - 1e-4), kink * (1 + 1e-4)}) {
+        BOOST_TEST(
+            wavecontact::pressure(normalised(m), a, x) == static_cast<double>(wave_curve_reference_pressure(m, a, x)),
+            "m = " << m << ", a = " << a << ", x = " << x << tt::tolerance(1e-10));
       }
       for (double x : {a * (1 - 1e-15), std::nextafter(a, 0.0)}) {
         const double p = wavecontact::pressure(normalised(m), a, x);
@@ -72,19 +71,16 @@ BOOST_AUTO_TEST_CASE(pressure_next_to_the_kink_and_the_edge) {
 }
 
 BOOST_AUTO_TEST_CASE(math_md_fact_8_check_values) {
-  BOOST_TEST(wavecontact::pressure(normalised(2), 0.6 * pi, 0.0) == 0.88807859551843,
-             tt::tolerance(1e-10));
+  BOOST_TEST(wavecontact::pressure(normalised(2), 0.6 * pi, 0.0) == 0.88807859551843, tt::tolerance(1e-10));
   BOOST_TEST(wavecontact::load(normalised(2), 0.6 * pi) == 3.0393833648235, tt::tolerance(1e-10));
-  BOOST_TEST(wavecontact::pressure(normalised(10), 0.75 * pi, 0.0) == 0.7480093387611,
-             tt::tolerance(1e-10));
+  BOOST_TEST(wavecontact::pressure(normalised(10), 0.75 * pi, 0.0) == 0.7480093387611, tt::tolerance(1e-10));
   BOOST_TEST(wavecontact::load(normalised(10), 0.75 * pi) == 2.5285385483266, tt::tolerance(1e-10));
   // pa/p* at a/b1 = 0.5, 0.6, 0.7, given to three decimals. (docs/mathematics.md's 0.968 for m = 2 at
   // 0.6 rounds P/pi = 3.0393833648235/pi = 0.96747 up; its own check value decides.)
   struct Row {
     double m, values[3];
   };
-  for (const Row& row : {Row{10, {1.658, 1.140, 0.874}}, Row{2, {0.866, 0.968, 0.891}},
-                         Row{0, {0.5, 0.655, 0.794}}}) {
+  for (const Row& row : {Row{10, {1.658, 1.140, 0.874}}, Row{2, {0.866, 0.968, 0.891}}, Row{0, {0.5, 0.655, 0.794}}}) {
     for (int i = 0; i < 3; ++i) {
       const double fa = 0.5 + 0.1 * i;
       const double got = wavecontact::pa_over_pstar(normalised(row.m), fa * pi);
@@ -135,8 +131,7 @@ BOOST_AUTO_TEST_CASE(closed_forms_and_quadrature_meet_at_half_period) {
     const WavinessParams p{1.0, 10.0, m, 1.0};
     const double half = 5.0, above = std::nextafter(half, 10.0);
     for (double x : {0.0, 1.5, 3.0, 4.5, 4.99}) {
-      BOOST_TEST(wavecontact::pressure(p, above, x) == wavecontact::pressure(p, half, x),
-                 tt::tolerance(1e-13));
+      BOOST_TEST(wavecontact::pressure(p, above, x) == wavecontact::pressure(p, half, x), tt::tolerance(1e-13));
     }
     BOOST_TEST(wavecontact::load(p, above) == wavecontact::load(p, half), tt::tolerance(1e-13));
   }
@@ -203,8 +198,7 @@ BOOST_AUTO_TEST_CASE(negative_pressure_beyond_the_kink_is_reported) {
   const auto bad = wavecontact::admissibility(normalised(2), 0.7 * pi);
   BOOST_TEST(!bad.admissible);
   BOOST_TEST(bad.most_negative_x > pi / 2);
-  BOOST_TEST(wavecontact::pressure(normalised(2), 0.7 * pi, 0.5775 * pi) == -0.120469,
-             tt::tolerance(1e-4));
+  BOOST_TEST(wavecontact::pressure(normalised(2), 0.7 * pi, 0.5775 * pi) == -0.120469, tt::tolerance(1e-4));
   BOOST_TEST(wavecontact::admissibility(normalised(0.5), 0.9 * pi).admissible);
   BOOST_TEST(wavecontact::admissibility(normalised(35), 0.45 * pi).admissible);
   // For m = 35 the valley closes at a = 0.491 b1 (pa/p* = 1.04), long before the load peaks.

@@ -21,8 +21,8 @@ namespace {
 
 void check_equal(const ex& got, const ex& expected, const std::string& what) {
   const ex difference = (got - expected).normal();
-  BOOST_TEST(difference.is_zero(), what << "\n  got:      " << got << "\n  expected: " << expected
-                                        << "\n  difference: " << difference);
+  BOOST_TEST(difference.is_zero(),
+             what << "\n  got:      " << got << "\n  expected: " << expected << "\n  difference: " << difference);
 }
 
 // The user's parameter symbols renamed to the built-in ones of the same name.
@@ -62,17 +62,16 @@ std::string refusal(const std::string& expression, std::vector<ProfileParameter>
 // Example (a), symbolically: the wave curve typed as an expression gives the built-in
 // closed forms (angle forms of pressure, load and dP/da), exactly.
 BOOST_AUTO_TEST_CASE(wave_curve_expression_equals_the_built_in_derivation) {
-  const ProfileDerivation d = derive_profile(
-      {"wave", "H1*(m+1)*cos(x)/(m*cos(x)+1)", {{"H1", numeric(1)}, {"m", numeric(1, 2)}}});
+  const ProfileDerivation d =
+      derive_profile({"wave", "H1*(m+1)*cos(x)/(m*cos(x)+1)", {{"H1", numeric(1)}, {"m", numeric(1, 2)}}});
   const WavinessDerivation& w = [] {
     static const WavinessDerivation built_in = derive_waviness();
     return std::cref(built_in);
   }();
-  check_equal(as_built_in(single_term(d.forms.pressure_angle), d), single_term(w.pressure_angle),
-              "pressure");
+  check_equal(as_built_in(single_term(d.forms.pressure_angle), d), single_term(w.pressure_angle), "pressure");
   check_equal(as_built_in(single_term(d.forms.load_angle), d), single_term(w.load_angle), "load");
-  check_equal(as_built_in(single_term(d.forms.load_slope_factor), d),
-              single_term(w.load_slope_factor), "dP/dSa - dP/dCa");
+  check_equal(as_built_in(single_term(d.forms.load_slope_factor), d), single_term(w.load_slope_factor),
+              "dP/dSa - dP/dCa");
   // Its one parameter-dependent pole, cos x = -1/m: v^2 = (m+1)/(m-1).
   BOOST_TEST_REQUIRE(d.pole_squares.size() == 1u);
   check_equal(as_built_in(d.pole_squares[0], d), (sym::m() + 1) / (sym::m() - 1), "pole");
@@ -84,7 +83,8 @@ BOOST_AUTO_TEST_CASE(wave_curve_expression_equals_the_built_in_derivation) {
 // P_k = (pi/2) E* H k [P_{k-1}(cos a) - P_k(cos a)]. The profile's own derivation splits
 // the cosine sum off (derive/profile/harmonic_part.hpp): A = (0, H1, 0, H3), nothing left.
 BOOST_AUTO_TEST_CASE(two_harmonic_load_is_the_legendre_form) {
-  const ProfileDerivation d = derive_profile({"two", "H1*cos(x)+H3*cos(3*x)", {{"H1", numeric(1)}, {"H3", numeric(1, 10)}}});
+  const ProfileDerivation d =
+      derive_profile({"two", "H1*cos(x)+H3*cos(3*x)", {{"H1", numeric(1)}, {"H3", numeric(1, 10)}}});
   const ex H1 = d.parameters[0], H3 = d.parameters[1], Ca = sym::Ca();
   BOOST_TEST_REQUIRE(d.forms.cosine.size() == 4u);
   check_equal(d.forms.cosine[1], H1, "A_1");
@@ -95,14 +95,12 @@ BOOST_AUTO_TEST_CASE(two_harmonic_load_is_the_legendre_form) {
 
   const ClosedForms whole = derive_closed_forms(d.forms.profile, {{}, d.forms.height}, d.sample);
   const ex expected = GiNaC::Pi / 2 * sym::E() *
-                      (H1 * (legendre(0, Ca) - legendre(1, Ca)) +
-                       3 * H3 * (legendre(2, Ca) - legendre(3, Ca)));
+                      (H1 * (legendre(0, Ca) - legendre(1, Ca)) + 3 * H3 * (legendre(2, Ca) - legendre(3, Ca)));
   check_equal(single_term(whole.load_angle).subs(sym::Sa() == 1 - Ca), expected, "load");
   // g(v) = -(E/2) y'(x) = (E/2)(H1 sin x + 3 H3 sin 3x), sin 3x = 3 sin x - 4 sin^3 x,
   // sin x = 2v/(1 + v^2).
   const ex v = sym::v(), sin_x = 2 * v / (1 + v * v);
-  check_equal(whole.g,
-              sym::E() / 2 * (H1 * sin_x + 3 * H3 * (3 * sin_x - 4 * GiNaC::pow(sin_x, 3))), "g");
+  check_equal(whole.g, sym::E() / 2 * (H1 * sin_x + 3 * H3 * (3 * sin_x - 4 * GiNaC::pow(sin_x, 3))), "g");
 }
 
 // Example (c) and every other refusal, each naming what is wrong and where.
@@ -155,8 +153,10 @@ BOOST_AUTO_TEST_CASE(full_contact_closed_forms) {
     for (const numeric& x : {numeric(-1), numeric(-1, 3), numeric(0), numeric(1, 2), numeric(1)}) {
       const GiNaC::exmap at{{C, x}, {sym::E(), 3}, {sym::b1(), 2}};
       const ex difference = (got.subs(at) - expected.subs(at)).evalf();
-      BOOST_TEST(GiNaC::abs(GiNaC::ex_to<numeric>(difference)) < numeric(1, 1000000000) * numeric(1, 1000000000) * numeric(1, 1000000000),
-                 "1/(" << c << " - cos x) at Cx = " << x << ": " << got.subs(at).evalf() << " vs " << expected.subs(at).evalf());
+      BOOST_TEST(GiNaC::abs(GiNaC::ex_to<numeric>(difference)) <
+                     numeric(1, 1000000000) * numeric(1, 1000000000) * numeric(1, 1000000000),
+                 "1/(" << c << " - cos x) at Cx = " << x << ": " << got.subs(at).evalf() << " vs "
+                       << expected.subs(at).evalf());
     }
   }
   GiNaC::Digits = digits;
@@ -165,8 +165,8 @@ BOOST_AUTO_TEST_CASE(full_contact_closed_forms) {
 // Eq. 2 typed with its |cos x|: the top branch is the analytic one, and beyond b1/2 the load
 // and both slope forms are the built-in's, exactly (one derivation, beyond_branch.hpp).
 BOOST_AUTO_TEST_CASE(eq2_with_abs_equals_the_built_in_beyond_half) {
-  const ProfileDerivation d = derive_profile(
-      {"wave", "H1*(m+1)*cos(x)/(m*abs(cos(x))+1)", {{"H1", numeric(1)}, {"m", numeric(1, 2)}}});
+  const ProfileDerivation d =
+      derive_profile({"wave", "H1*(m+1)*cos(x)/(m*abs(cos(x))+1)", {{"H1", numeric(1)}, {"m", numeric(1, 2)}}});
   const WavinessDerivation& w = [] {
     static const WavinessDerivation built_in = derive_waviness();
     return std::cref(built_in);

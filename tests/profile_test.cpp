@@ -60,15 +60,15 @@ BOOST_AUTO_TEST_CASE(wave_curve_expression_reproduces_the_built_in) {
       for (double fx : {0.0, 0.3, 0.6, 0.9, 0.999, 1 - 1e-9}) {
         const double x = fx * a;
         const double got = profile.pressure(a, x), expected = wavecontact::pressure(w, a, x);
-        BOOST_TEST_MESSAGE("m = " << m << ", a = " << a << ", x = " << x << ": " << got << " vs built-in "
-                                  << expected);
+        BOOST_TEST_MESSAGE("m = " << m << ", a = " << a << ", x = " << x << ": " << got << " vs built-in " << expected);
         double& worst = fa <= 0.5 ? worst_p : worst_beyond;
         worst = std::max(worst, relative(got, expected));
       }
     }
   }
-  BOOST_TEST_MESSAGE("eq. 2 as an expression vs built-in: pressure " << worst_p << " up to b1/2, "
-                     << worst_beyond << " beyond; load " << worst_P << ", dP/da " << worst_slope);
+  BOOST_TEST_MESSAGE("eq. 2 as an expression vs built-in: pressure " << worst_p << " up to b1/2, " << worst_beyond
+                                                                     << " beyond; load " << worst_P << ", dP/da "
+                                                                     << worst_slope);
   BOOST_TEST(worst_P <= 1e-14);
   BOOST_TEST(worst_slope <= 1e-14);
   BOOST_TEST(worst_p <= 1e-14);
@@ -108,9 +108,7 @@ BOOST_AUTO_TEST_CASE(two_harmonic_load_and_slope) {
     const Profile profile = two_harmonic(1.0, H3);
     for (double a : {1.0, 4.0, 7.5, 9.5}) {
       // x = a sin(phi) removes the square-root edge.
-      const auto integrand = [&](double phi) {
-        return 2 * profile.pressure(a, a * std::sin(phi)) * a * std::cos(phi);
-      };
+      const auto integrand = [&](double phi) { return 2 * profile.pressure(a, a * std::sin(phi)) * a * std::cos(phi); };
       const double quadrature =
           boost::math::quadrature::gauss_kronrod<double, 61>::integrate(integrand, 0, pi / 2, 10, 1e-14);
       BOOST_TEST(profile.load(a) == quadrature, tt::tolerance(1e-12));
@@ -151,15 +149,15 @@ BOOST_AUTO_TEST_CASE(validation_names_what_is_wrong) {
   };
   const std::string missing = message([] { Profile({"two_harmonic", {{"H1", 1.0}}, 10, 1}); });
   BOOST_TEST(missing.find("needs the parameter \"H3\"") != std::string::npos, missing);
-  const std::string unknown =
-      message([] { Profile({"two_harmonic", {{"H1", 1.0}, {"H3", 0.1}, {"H5", 0.0}}, 10, 1}); });
+  const std::string unknown = message([] {
+    Profile({"two_harmonic", {{"H1", 1.0}, {"H3", 0.1}, {"H5", 0.0}}, 10, 1});
+  });
   BOOST_TEST(unknown.find("no parameter \"H5\"") != std::string::npos, unknown);
   const std::string name = message([] { Profile({"no_such", {}, 10, 1}); });
   BOOST_TEST(name.find("two_harmonic") != std::string::npos, name);
   const std::string b1 = message([] { two_harmonic(1, 0.1, -1); });
   BOOST_TEST(b1.find("b1 = -1") != std::string::npos, b1);
-  const std::string nan =
-      message([] { Profile({"two_harmonic", {{"H1", NAN}, {"H3", 0.1}}, 10, 1}); });
+  const std::string nan = message([] { Profile({"two_harmonic", {{"H1", NAN}, {"H3", 0.1}}, 10, 1}); });
   BOOST_TEST(nan.find("H1 = nan") != std::string::npos, nan);
   const std::string a = message([] { two_harmonic(1, 0.1).pressure(10.5, 0); });
   BOOST_TEST(a.find("Profile::pressure: a = 10.5") != std::string::npos, a);

@@ -25,9 +25,7 @@ constexpr double eps = 2.220446049250313e-16;
 long double reference(int j, int l, long double z) {
   static boost::math::quadrature::tanh_sinh<long double> integrator;  // integrate() is not const
   if (z < 0) {
-    const auto f = [&](long double u) {
-      return std::pow(1 - u, 2 * j) / std::pow((1 + z) - z * u * (2 - u), l);
-    };
+    const auto f = [&](long double u) { return std::pow(1 - u, 2 * j) / std::pow((1 + z) - z * u * (2 - u), l); };
     return integrator.integrate(f, 0.0L, 1.0L, 1e-19L);
   }
   const auto f = [&](long double w) { return std::pow(w, 2 * j) / std::pow(1 + z * w * w, l); };
@@ -57,8 +55,8 @@ BOOST_AUTO_TEST_CASE(against_quadrature_in_eps) {
   std::string where;
   for (int j = 0; j <= 3; ++j) {
     for (int l = 1; l <= 4; ++l) {
-      for (double z : {-0.999999, -0.99, -0.9, -0.7500001, -0.75, -0.5, -0.3, -1e-9, 0.0, 1e-12, 0.2,
-                       0.75, 1.0, 3.0, 6.9999999, 7.0, 7.0000001, 12.0, 40.0, 1e3, 1e6}) {
+      for (double z : {-0.999999, -0.99, -0.9, -0.7500001, -0.75, -0.5,      -0.3, -1e-9, 0.0, 1e-12, 0.2,
+                       0.75,      1.0,   3.0,  6.9999999,  7.0,   7.0000001, 12.0, 40.0,  1e3, 1e6}) {
         const long double exact = reference(j, l, z);
         const double got = wavecontact::quadratic_moment(j, l, z);
         const double error = static_cast<double>(std::fabs(got - exact) / exact) / eps;
@@ -67,7 +65,7 @@ BOOST_AUTO_TEST_CASE(against_quadrature_in_eps) {
           where = "j = " + std::to_string(j) + ", l = " + std::to_string(l) + ", z = " + std::to_string(z);
         }
         BOOST_TEST(error <= 8.0, "I_{" << j << "," << l << "}(" << z << "): " << got << " vs "
-                                        << static_cast<double>(exact) << ", " << error << " eps");
+                                       << static_cast<double>(exact) << ", " << error << " eps");
       }
     }
   }
@@ -106,7 +104,8 @@ BOOST_AUTO_TEST_CASE(two_factor_moment_against_quadrature_in_eps) {
   };
   std::vector<Arguments> grid;
   for (double one_plus_z : {1e-9, 2e-4, 0.01, 0.3, 0.5, 0.7, 1.0, 1.3, 2.0, 3.0, 4.0}) {
-    for (double ratio : {1e-6, 0.1, 0.19999, 0.2, 0.20001, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.2, 2.0, 4.9999, 5.0, 5.0001, 10.0}) {
+    for (double ratio :
+         {1e-6, 0.1, 0.19999, 0.2, 0.20001, 0.5, 0.9, 0.999999, 1.0, 1.000001, 1.2, 2.0, 4.9999, 5.0, 5.0001, 10.0}) {
       const double one_plus_y = one_plus_z * ratio;
       if (one_plus_y <= 5.0) grid.push_back({one_plus_y, one_plus_z});
     }
@@ -129,7 +128,8 @@ BOOST_AUTO_TEST_CASE(two_factor_moment_against_quadrature_in_eps) {
             worst = error;
             where = at.str();
           }
-          BOOST_TEST(error <= (edge ? 64.0 : 32.0), at.str() << ": " << got << " vs " << static_cast<double>(exact) << ", " << error << " eps");
+          BOOST_TEST(error <= (edge ? 64.0 : 32.0),
+                     at.str() << ": " << got << " vs " << static_cast<double>(exact) << ", " << error << " eps");
         }
       }
     }
@@ -150,9 +150,7 @@ BOOST_AUTO_TEST_CASE(edge_moment_against_quadrature_in_eps) {
     for (int j = 0; j <= 4; ++j) {
       for (int l = 0; l <= 4; ++l) {
         // In u = 1 - w: (1 - w^2) = u (2 - u), 1 + z w^2 as factor() does.
-        const auto f = [&](long double u) {
-          return std::pow(u * (2 - u), j) / std::pow(factor(z, one_plus_z, u), l);
-        };
+        const auto f = [&](long double u) { return std::pow(u * (2 - u), j) / std::pow(factor(z, one_plus_z, u), l); };
         const long double exact = integrator.integrate(f, 0.0L, 1.0L, 1e-19L);
         const double got = wavecontact::edge_moment(j, l, static_cast<double>(z), one_plus_z);
         const double error = static_cast<double>(std::fabs(got - exact) / exact) / eps;
@@ -162,7 +160,8 @@ BOOST_AUTO_TEST_CASE(edge_moment_against_quadrature_in_eps) {
           worst = error;
           where = at.str();
         }
-        BOOST_TEST(error <= 16.0, at.str() << ": " << got << " vs " << static_cast<double>(exact) << ", " << error << " eps");
+        BOOST_TEST(error <= 16.0,
+                   at.str() << ": " << got << " vs " << static_cast<double>(exact) << ", " << error << " eps");
       }
     }
   }
@@ -175,9 +174,11 @@ BOOST_AUTO_TEST_CASE(two_factor_moment_refusals) {
     wavecontact::two_factor_moment(0, 1, -1.0, 0.0, 0.5, 1.5);
     BOOST_FAIL("y = -1 accepted");
   } catch (const std::domain_error& e) {
-    BOOST_TEST(std::string(e.what()).find("two_factor_moment: j = 0, l = 1, y = -1, 1 + y = 0") != std::string::npos, e.what());
+    BOOST_TEST(std::string(e.what()).find("two_factor_moment: j = 0, l = 1, y = -1, 1 + y = 0") != std::string::npos,
+               e.what());
   }
-  BOOST_CHECK_THROW(wavecontact::two_factor_moment(0, 2, 10.0, 11.0, 9.0, 10.0), std::domain_error);  // the series beyond 4
+  BOOST_CHECK_THROW(wavecontact::two_factor_moment(0, 2, 10.0, 11.0, 9.0, 10.0),
+                    std::domain_error);  // the series beyond 4
   BOOST_CHECK_THROW(wavecontact::two_factor_moment(-1, 2, 0.0, 1.0, 0.0, 1.0), std::domain_error);
   BOOST_CHECK_NO_THROW(wavecontact::two_factor_moment(0, 2, 10.0, 11.0, 1.0, 2.0));  // far apart
 }
@@ -187,7 +188,8 @@ BOOST_AUTO_TEST_CASE(refusals_name_the_argument) {
     wavecontact::quadratic_moment(0, 1, -1.0);
     BOOST_FAIL("z = -1 accepted");
   } catch (const std::domain_error& e) {
-    BOOST_TEST(std::string(e.what()).find("quadratic_moment: j = 0, l = 1, z = -1, 1 + z = 0") != std::string::npos, e.what());
+    BOOST_TEST(std::string(e.what()).find("quadratic_moment: j = 0, l = 1, z = -1, 1 + z = 0") != std::string::npos,
+               e.what());
   }
   BOOST_CHECK_THROW(wavecontact::quadratic_moment(0, 0, 0.5), std::domain_error);
   BOOST_CHECK_THROW(wavecontact::quadratic_moment(0, 1, NAN), std::domain_error);

@@ -29,8 +29,8 @@ std::vector<int> default_n() {
 
 void check_equal(const ex& got, const ex& expected, const std::string& what) {
   const ex difference = (got - expected).normal();
-  BOOST_TEST(difference.is_zero(), what << "\n  got:      " << got << "\n  expected: " << expected
-                                        << "\n  difference: " << difference);
+  BOOST_TEST(difference.is_zero(),
+             what << "\n  got:      " << got << "\n  expected: " << expected << "\n  difference: " << difference);
 }
 
 }  // namespace
@@ -54,8 +54,7 @@ BOOST_AUTO_TEST_CASE(coefficients_for_every_generated_n) {
   for (int n : ns) {
     const auto start = std::chrono::steady_clock::now();
     const auto k = expansion_coefficients(n);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (n == 64 || n == 256 || n == 1024) {
       BOOST_TEST_MESSAGE("k_1..k_n for n = " << n << ": " << seconds << " s");
     }
@@ -87,8 +86,7 @@ BOOST_AUTO_TEST_CASE(engine_inversion_is_the_legendre_dirichlet_form) {
     BOOST_TEST_REQUIRE(terms.size() == 1u);
     const ex engine_squared = GiNaC::pow(terms[0].rational, 2) * terms[0].radicand;
     const ex stable = legendre_dirichlet_pressure(n);
-    check_equal(engine_squared, atoms_in_v_variables(GiNaC::pow(stable, 2)),
-                "p_r^2, n = " + std::to_string(n));
+    check_equal(engine_squared, atoms_in_v_variables(GiNaC::pow(stable, 2)), "p_r^2, n = " + std::to_string(n));
     // Same sign at a point of the domain (small zone: the roughness pressure is positive there).
     GiNaC::exmap point = sample_point_v();
     point[sym::alpha()] = numeric(1, 20);
@@ -147,13 +145,11 @@ BOOST_AUTO_TEST_CASE(legendre_dirichlet_form_solves_eq5_for_large_n) {
       const numeric Fv = F(v);
       numeric integral = 0;
       for (int k = 0; k < nodes; ++k) {
-        const numeric u =
-            alpha * GiNaC::ex_to<numeric>(GiNaC::cos(GiNaC::Pi * (k + numeric(1, 2)) / nodes).evalf());
+        const numeric u = alpha * GiNaC::ex_to<numeric>(GiNaC::cos(GiNaC::Pi * (k + numeric(1, 2)) / nodes).evalf());
         integral += (F(u) - Fv) / (v - u);
       }
       integral = integral / nodes;
-      const numeric g = numeric(n, 2) *
-                        GiNaC::ex_to<numeric>(GiNaC::sin(n * 2 * GiNaC::atan(v)).evalf());
+      const numeric g = numeric(n, 2) * GiNaC::ex_to<numeric>(GiNaC::sin(n * 2 * GiNaC::atan(v)).evalf());
       const double residual = (GiNaC::abs(integral - g) / n).to_double();
       BOOST_TEST_MESSAGE("n = " << n << ", v = " << v << ": |forward transform - g| / n = " << residual);
       BOOST_TEST(residual < 1e-25, "n = " << n << ", v = " << v);

@@ -24,9 +24,7 @@ namespace {
 using boost::math::double_constants::pi;
 
 // Roughness only: H1 is irrelevant to the roughness parts, m = 0.
-TwoScaleParams roughness_only(double H2, int n, double b1 = pi, double E = 1) {
-  return {{1.0, b1, 0.0, E}, {H2, n}};
-}
+TwoScaleParams roughness_only(double H2, int n, double b1 = pi, double E = 1) { return {{1.0, b1, 0.0, E}, {H2, n}}; }
 
 const std::vector<int> tested_n{2, 8, 16, 32, 64, 128, 256};
 
@@ -53,9 +51,7 @@ double eq20_by_direct_sum(int n, double a, double x) {
   for (const std::string& k : expansion_coefficients(n)) {
     power *= z;
     const auto slash = k.find('/');
-    const Real value = slash == std::string::npos
-                           ? Real(k)
-                           : Real(k.substr(0, slash)) / Real(k.substr(slash + 1));
+    const Real value = slash == std::string::npos ? Real(k) : Real(k.substr(0, slash)) / Real(k.substr(slash + 1));
     sum += value * power;
   }
   return static_cast<double>(Real(n) * n / 2 * sqrt(alpha * alpha - u * u) * sum);
@@ -87,11 +83,9 @@ BOOST_AUTO_TEST_CASE(load_is_the_legendre_identity) {
       const double b1 = 2.0, E = 3.0, H2 = 0.1, a = fa * b1;
       const TwoScaleContact contact(roughness_only(H2, n, b1, E), a);
       const double c = std::cos(pi * a / b1);
-      const double expected = pi / 2 * E * H2 * n *
-                              (boost::math::legendre_p(n - 1, c) - boost::math::legendre_p(n, c));
+      const double expected = pi / 2 * E * H2 * n * (boost::math::legendre_p(n - 1, c) - boost::math::legendre_p(n, c));
       BOOST_TEST(std::abs(contact.roughness_load() - expected) <= 1e-13 * E * H2 * n,
-                 "n = " << n << ", a/b1 = " << fa << ": " << contact.roughness_load() << " vs "
-                        << expected);
+                 "n = " << n << ", a/b1 = " << fa << ": " << contact.roughness_load() << " vs " << expected);
     }
   }
 }

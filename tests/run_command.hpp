@@ -72,8 +72,7 @@ inline CommandResult run_command(const std::vector<std::string>& argv, const Com
   int raw = 0;
   waitpid(pid, &raw, 0);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, options.stdout_path.empty() ? slurp(out) : "", slurp(err),
-          seconds};
+  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, options.stdout_path.empty() ? slurp(out) : "", slurp(err), seconds};
 }
 
 }  // namespace wavecontact::test

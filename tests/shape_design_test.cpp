@@ -49,9 +49,8 @@ BOOST_AUTO_TEST_CASE(optimum_against_brute_force) {
   for (const auto& [ratio, points] : {std::pair{0.05, 1000}, {0.2, 1000}, {0.5, 1000}, {0.8, 40}}) {
     const Scan scan = brute_force(ratio, points);
     const auto best = wavecontact::most_uniform_shape(ratio);
-    BOOST_TEST_MESSAGE("pa/p* = " << ratio << ": optimum m = " << best.m << ", max/mean = "
-                       << best.max_over_mean << "; scan of " << points + 1 << ": m = " << scan.m
-                       << ", " << scan.value);
+    BOOST_TEST_MESSAGE("pa/p* = " << ratio << ": optimum m = " << best.m << ", max/mean = " << best.max_over_mean
+                                  << "; scan of " << points + 1 << ": m = " << scan.m << ", " << scan.value);
     BOOST_TEST(best.max_over_mean <= scan.value + 1e-12);
     BOOST_TEST(scan.value - best.max_over_mean <= (points >= 1000 ? 1e-5 : 2e-2));
     const double spacing = std::log1p(100.0) / points;

@@ -38,9 +38,7 @@ struct Digits {
   long saved;
 };
 
-numeric value(const ex& e, const GiNaC::exmap& point) {
-  return GiNaC::ex_to<numeric>(e.subs(point).evalf());
-}
+numeric value(const ex& e, const GiNaC::exmap& point) { return GiNaC::ex_to<numeric>(e.subs(point).evalf()); }
 
 std::string text(const numeric& q) {
   std::ostringstream os;
@@ -90,7 +88,8 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_is_eq12) {
         };
         const numeric kink = GiNaC::asin(numeric(1) / alpha);
         const numeric eq12 = GiNaC::sqrt(alpha * alpha - u * u) * 2 / GiNaC::ex_to<numeric>(GiNaC::Pi.evalf()) *
-                             (tanh_sinh(integrand, 0, kink) + tanh_sinh(integrand, kink, GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf())));
+                             (tanh_sinh(integrand, 0, kink) +
+                              tanh_sinh(integrand, kink, GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf())));
         const auto& side = on_top ? d.beyond_half.pressure_top_v : d.beyond_half.pressure_flank_v;
         GiNaC::exmap point{{sym::alpha(), alpha}, {sym::s(), u * u}, {sym::m(), m}, {sym::b1(), GiNaC::Pi}};
         point.insert(parameters.begin(), parameters.end());
@@ -135,8 +134,8 @@ BOOST_AUTO_TEST_CASE(load_from_g_alone_is_the_engines_load) {
   const ex engine = d.load.with_roots(d.radicals);
   for (const numeric& m : {numeric(0), numeric(1, 2), numeric(3), numeric(40)}) {
     for (const numeric& alpha : {numeric(1, 10), numeric(3, 5), numeric(99, 100)}) {
-      const GiNaC::exmap point{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), numeric(3, 2)},
-                               {sym::H1(), numeric(2, 3)}};
+      const GiNaC::exmap point{
+          {sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), numeric(3, 2)}, {sym::H1(), numeric(2, 3)}};
       check_close(value(from_g, point), value(engine, point), "load at m = " + text(m));
     }
   }
@@ -185,12 +184,14 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
     for (const numeric& alpha : {numeric(1000001, 1000000), numeric(3, 2), numeric(20)}) {
       const numeric Ca = (1 - alpha * alpha) / (1 + alpha * alpha);
       const GiNaC::exmap v_point{{sym::alpha(), alpha}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
-      const GiNaC::exmap angle_point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
+      const GiNaC::exmap angle_point{
+          {sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
       const numeric v_form = value(as_ex(d.beyond_half.load_v), v_point);
       const std::string where = "m = " + text(m) + ", alpha = " + text(alpha);
       check_close(value(as_ex(d.beyond_half.load_angle), angle_point), v_form, "angle form, " + where);
       if (value(d.beyond_half.top_piece_argument, angle_point) > 0) {  // where the near-half form holds
-        check_close(value(as_ex(d.beyond_half.load_near_branch_angle), angle_point), v_form, "near-half form, " + where);
+        check_close(value(as_ex(d.beyond_half.load_near_branch_angle), angle_point), v_form,
+                    "near-half form, " + where);
       }
       check_close(value(as_ex(d.beyond_half.load_slope_factor_by_parts), angle_point),
                   value(as_ex(d.beyond_half.load_slope_factor), angle_point), "slope forms, " + where);
@@ -201,6 +202,7 @@ BOOST_AUTO_TEST_CASE(beyond_half_forms_agree) {
   const numeric Ca = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -20)) * -1, m = 3;
   const GiNaC::exmap point{{sym::Ca(), Ca}, {sym::Sa(), 1 - Ca}, {sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}};
   const ex below = single_term(d.load_angle);
-  const double jump = (GiNaC::abs(value(as_ex(d.beyond_half.load_near_branch_angle), point) - value(below, point))).to_double();
+  const double jump =
+      (GiNaC::abs(value(as_ex(d.beyond_half.load_near_branch_angle), point) - value(below, point))).to_double();
   BOOST_TEST(jump < 1e-27, "load across b1/2: " << jump);
 }

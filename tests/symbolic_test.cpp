@@ -32,8 +32,8 @@ const WavinessDerivation& waviness() {
 // GiNaC's exam style: zero after normal(), else print everything.
 void check_equal(const ex& got, const ex& expected, const std::string& what) {
   const ex difference = (got - expected).normal();
-  BOOST_TEST(difference.is_zero(), what << "\n  got:      " << got << "\n  expected: " << expected
-                                        << "\n  difference: " << difference);
+  BOOST_TEST(difference.is_zero(),
+             what << "\n  got:      " << got << "\n  expected: " << expected << "\n  difference: " << difference);
 }
 
 // p^(u)^2 from the engine's closed form: (alpha^2 - s) * inversion^2 with radicals squared.
@@ -51,8 +51,7 @@ BOOST_AUTO_TEST_CASE(kernel_identity_of_block_keer) {
   const ex z = exp_i(v) / exp_i(u);  // e^{i (x - xi)}
   const ex cot_half_difference = GiNaC::I * (z + 1) / (z - 1);
   const ex dxi_du = (2 * GiNaC::atan(u)).diff(sym::u());
-  check_equal(cot_half_difference * dxi_du, 2 * (1 / (v - u) + u / (1 + pow(u, 2))),
-              "kernel identity");
+  check_equal(cot_half_difference * dxi_du, 2 * (1 / (v - u) + u / (1 + pow(u, 2))), "kernel identity");
   // And e^{i x} = (1 + i v)/(1 - i v) really is v = tan(x/2): tan of its half angle.
   const ex half = (exp_i(v) - 1) / (GiNaC::I * (exp_i(v) + 1));  // tan(x/2) from e^{ix}
   check_equal(half, v, "tan(x/2) from e^{ix}");
@@ -73,8 +72,7 @@ BOOST_AUTO_TEST_CASE(half_angle_multiples_match_de_moivre_and_trig) {
 BOOST_AUTO_TEST_CASE(derived_g_is_eq_11) {
   // Eq. 11 as reconstructed in docs/mathematics.md.
   const ex v = sym::v(), m = sym::m();
-  const ex eq11 = sym::E() * sym::H1() * (m + 1) * v * (1 + pow(v, 2)) /
-                  pow(m - m * pow(v, 2) + pow(v, 2) + 1, 2);
+  const ex eq11 = sym::E() * sym::H1() * (m + 1) * v * (1 + pow(v, 2)) / pow(m - m * pow(v, 2) + pow(v, 2) + 1, 2);
   check_equal(waviness().g, eq11, "g(v) of the parametric wave curve");
 }
 
@@ -90,14 +88,10 @@ BOOST_AUTO_TEST_CASE(m_zero_is_westergaard) {
   const auto& d = waviness();
   const ex s = sym::s(), alpha2 = pow(sym::alpha(), 2), EH = sym::E() * sym::H1();
   const GiNaC::exmap m0{{sym::m(), 0}};
-  const ex westergaard_squared =
-      pow(EH, 2) / (1 + s) * (alpha2 / (1 + alpha2) - s / (1 + s));
-  check_equal(pressure_squared(d.inversion, d.radicals).subs(m0), westergaard_squared,
-              "exact p^2 at m = 0");
-  check_equal(pressure_squared(d.paper_inversion, d.radicals).subs(m0), westergaard_squared,
-              "printed p^2 at m = 0");
-  check_equal(d.load.with_roots(d.radicals).subs(m0), GiNaC::Pi * EH * alpha2 / (1 + alpha2),
-              "load at m = 0");
+  const ex westergaard_squared = pow(EH, 2) / (1 + s) * (alpha2 / (1 + alpha2) - s / (1 + s));
+  check_equal(pressure_squared(d.inversion, d.radicals).subs(m0), westergaard_squared, "exact p^2 at m = 0");
+  check_equal(pressure_squared(d.paper_inversion, d.radicals).subs(m0), westergaard_squared, "printed p^2 at m = 0");
+  check_equal(d.load.with_roots(d.radicals).subs(m0), GiNaC::Pi * EH * alpha2 / (1 + alpha2), "load at m = 0");
 }
 
 BOOST_AUTO_TEST_CASE(small_contact_is_hertz) {
@@ -122,16 +116,15 @@ BOOST_AUTO_TEST_CASE(printed_eq13_has_the_exact_load) {
               "load of the printed eq. 13 against the exact load");
   // ... while the pressures differ for m != 0.
   const ex difference =
-      (pressure_squared(d.inversion, d.radicals) - pressure_squared(d.paper_inversion, d.radicals))
-          .normal();
+      (pressure_squared(d.inversion, d.radicals) - pressure_squared(d.paper_inversion, d.radicals)).normal();
   BOOST_TEST(!difference.is_zero());
 }
 
 // The forward transform (1/pi) PV Int p(u)/(v - u) du at 40 digits by the midpoint rule
 // in u = alpha cos(theta) (PV Int_0^pi dtheta/(v - alpha cos theta) = 0 for |v| < alpha):
 // (1/pi) Int_0^pi (F(alpha cos theta) - F(v))/(v - alpha cos theta) dtheta, F = (alpha^2 - u^2) I(u^2).
-numeric forward_transform(const ex& inversion, const GiNaC::exmap& parameters, const numeric& alpha,
-                          const numeric& v, int nodes) {
+numeric forward_transform(const ex& inversion, const GiNaC::exmap& parameters, const numeric& alpha, const numeric& v,
+                          int nodes) {
   const GiNaC::symbol uu("uu");
   const ex F = ((pow(alpha, 2) - pow(uu, 2)) * inversion.subs(parameters).subs(sym::s() == pow(uu, 2)))
                    .subs(sym::alpha() == alpha);
@@ -150,18 +143,15 @@ BOOST_AUTO_TEST_CASE(exact_pressure_satisfies_eq5_and_printed_does_not) {
   wavecontact::test::Precision precision(wavecontact::test::reference_digits);
   const numeric alpha(7, 10);
   for (const numeric& m : {numeric(0), numeric(1, 2), numeric(2), numeric(10)}) {
-    const GiNaC::exmap parameters{{sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1},
-                                  {sym::alpha(), alpha}};
+    const GiNaC::exmap parameters{{sym::m(), m}, {sym::E(), 1}, {sym::H1(), 1}, {sym::alpha(), alpha}};
     const ex exact = d.inversion.with_roots(d.radicals);
     const ex printed = d.paper_inversion.with_roots(d.radicals);
     for (const numeric& v : {numeric(1, 10), numeric(4, 10), numeric(65, 100)}) {
       const numeric g = GiNaC::ex_to<numeric>(d.g.subs(parameters).subs(sym::v() == v).evalf());
       const numeric exact_residual = GiNaC::abs(forward_transform(exact, parameters, alpha, v, 96) - g) / g;
-      const numeric printed_residual =
-          GiNaC::abs(forward_transform(printed, parameters, alpha, v, 96) - g) / g;
-      BOOST_TEST_MESSAGE("m = " << m << ", v = " << v << ": eq. 5 residual exact "
-                                << exact_residual.to_double() << ", printed "
-                                << printed_residual.to_double());
+      const numeric printed_residual = GiNaC::abs(forward_transform(printed, parameters, alpha, v, 96) - g) / g;
+      BOOST_TEST_MESSAGE("m = " << m << ", v = " << v << ": eq. 5 residual exact " << exact_residual.to_double()
+                                << ", printed " << printed_residual.to_double());
       BOOST_TEST(exact_residual.to_double() < 1e-30);
       if (m.is_zero()) {
         BOOST_TEST(printed_residual.to_double() < 1e-30);
@@ -184,8 +174,8 @@ BOOST_AUTO_TEST_CASE(angle_forms_equal_v_forms) {
     for (std::size_t i = 0; i < v_form->size(); ++i) {
       bool sign_agrees = false;
       const ex residual = angle_form_residual((*v_form)[i], (*angle_form)[i], sign_agrees);
-      BOOST_TEST(residual.is_zero(), "angle form " << as_ex((*angle_form)[i]) << " of "
-                                                   << as_ex((*v_form)[i]) << ": " << residual);
+      BOOST_TEST(residual.is_zero(),
+                 "angle form " << as_ex((*angle_form)[i]) << " of " << as_ex((*v_form)[i]) << ": " << residual);
       BOOST_TEST(sign_agrees);
     }
   }
@@ -194,8 +184,8 @@ BOOST_AUTO_TEST_CASE(angle_forms_equal_v_forms) {
 BOOST_AUTO_TEST_CASE(manifest_matches_the_engine) {
   const auto& d = waviness();
   GiNaC::symtab table;
-  for (const auto& s : {sym::x(), sym::v(), sym::s(), sym::alpha(), sym::m(), sym::E(), sym::H1(),
-                        sym::b1(), sym::Ca(), sym::Sa(), sym::Cx(), sym::Sx(), sym::D()}) {
+  for (const auto& s : {sym::x(), sym::v(), sym::s(), sym::alpha(), sym::m(), sym::E(), sym::H1(), sym::b1(), sym::Ca(),
+                        sym::Sa(), sym::Cx(), sym::Sx(), sym::D()}) {
     table[s.get_name()] = s;
   }
   table["Pi"] = GiNaC::Pi;
@@ -304,13 +294,11 @@ BOOST_AUTO_TEST_CASE(load_slope_factor_is_the_derivative) {
   const numeric tolerance = GiNaC::ex_to<numeric>(pow(numeric(10), -30));
   for (const numeric& m : {numeric(0), numeric(1, 5), numeric(3), numeric(35)}) {
     for (const numeric& a : {numeric(1, 10), numeric(1, 2), numeric(9, 10)}) {
-      const GiNaC::lst point{alpha == a, sym::m() == m, sym::E() == numeric(3, 2),
-                             sym::H1() == numeric(2, 3)};
+      const GiNaC::lst point{alpha == a, sym::m() == m, sym::E() == numeric(3, 2), sym::H1() == numeric(2, 3)};
       const ex difference = (got.subs(point) - expected.subs(point)).evalf();
       const ex scale = expected.subs(point).evalf();
       BOOST_TEST(GiNaC::ex_to<numeric>(GiNaC::abs(difference / scale).evalf()) < tolerance,
-                 "m = " << m << ", alpha = " << a << ": got " << got.subs(point).evalf()
-                        << ", expected " << scale);
+                 "m = " << m << ", alpha = " << a << ": got " << got.subs(point).evalf() << ", expected " << scale);
     }
   }
   GiNaC::Digits = digits;
@@ -323,7 +311,7 @@ BOOST_AUTO_TEST_CASE(height_in_cos_is_the_profile) {
   const ex c = GiNaC::cos(sym::x());
   check_equal(d.height.subs(sym::Cx() == c), parametric_wave_curve(), "Y(cos x^)");
   // dy/dx^ = Y'(cos x^) (-sin x^).
-  check_equal(-d.height_slope.subs(sym::Cx() == c) * GiNaC::sin(sym::x()),
-              parametric_wave_curve().diff(sym::x()), "Y'(cos x^) d(cos x^)/dx^");
+  check_equal(-d.height_slope.subs(sym::Cx() == c) * GiNaC::sin(sym::x()), parametric_wave_curve().diff(sym::x()),
+              "Y'(cos x^) d(cos x^)/dx^");
   BOOST_TEST(d.harmonic == 1);
 }

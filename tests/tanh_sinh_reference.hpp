@@ -10,8 +10,8 @@ namespace wavecontact::test {
 
 // Step 1/128, nodes until the weights fall below 10^-(Digits + 5); 1 - tanh(s) = 2/(e^2s + 1)
 // keeps the nodes next to the ends apart from them. f must be smooth inside (lo, hi).
-inline GiNaC::numeric tanh_sinh(const std::function<GiNaC::numeric(const GiNaC::numeric&)>& f,
-                                const GiNaC::numeric& lo, const GiNaC::numeric& hi) {
+inline GiNaC::numeric tanh_sinh(const std::function<GiNaC::numeric(const GiNaC::numeric&)>& f, const GiNaC::numeric& lo,
+                                const GiNaC::numeric& hi) {
   using GiNaC::numeric;
   const numeric half = (hi - lo) / 2, h(1, 128);
   const numeric pi_half = GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf());

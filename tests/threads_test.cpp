@@ -44,11 +44,12 @@ BOOST_AUTO_TEST_CASE(waviness_pressure) {
   const WavinessParams w{1.0, 10.0, 2.0, 1.0};
   same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 4.0, x, p); }, points,
                                  "a <= b1/2");
-  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 4.0, x, p, Form::paper); },
-                                 points, "printed");
-  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 6.0, x, p); },
-                                 Eigen::ArrayXd::LinSpaced(5 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -6, 6),
-                                 "beyond b1/2 (quadrature)");
+  same_bits_whatever_the_threads(
+      [&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 4.0, x, p, Form::paper); }, points, "printed");
+  same_bits_whatever_the_threads(
+      [&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { pressure(w, 6.0, x, p); },
+      Eigen::ArrayXd::LinSpaced(5 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -6, 6),
+      "beyond b1/2 (quadrature)");
 }
 
 BOOST_AUTO_TEST_CASE(two_scale_pressure) {
@@ -59,9 +60,9 @@ BOOST_AUTO_TEST_CASE(two_scale_pressure) {
 
 BOOST_AUTO_TEST_CASE(contact_pressure) {
   const Contact c = solve_contact(Surface(WavinessParams{1.0, 10.0, 0.0, 1.0}, {{0.15, 8}}), 0.3 * M_PI);
-  same_bits_whatever_the_threads([&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { c.pressure(x, p); },
-                                 Eigen::ArrayXd::LinSpaced(50 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -10, 10),
-                                 "contact");
+  same_bits_whatever_the_threads(
+      [&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { c.pressure(x, p); },
+      Eigen::ArrayXd::LinSpaced(50 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -10, 10), "contact");
 }
 
 // A point that is not finite, in the first, a middle or the last chunk of a split array: the

@@ -17,8 +17,7 @@ const long double pi_l = 3.141592653589793238462643383279502884L;
 double ulps(double computed, double t) {
   const long double exact = std::sin(pi_l * static_cast<long double>(t));
   const double rounded = static_cast<double>(exact);
-  const double ulp = std::nextafter(std::fabs(rounded), std::numeric_limits<double>::infinity()) -
-                     std::fabs(rounded);
+  const double ulp = std::nextafter(std::fabs(rounded), std::numeric_limits<double>::infinity()) - std::fabs(rounded);
   return static_cast<double>(std::fabs(static_cast<long double>(computed) - exact)) / ulp;
 }
 
@@ -38,8 +37,7 @@ double worst_ulps(const Sine& sine, double bound) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(within_one_ulp_on_their_ranges) {
-  const double quarter =
-      worst_ulps([](double t) { return wavecontact::generated::sinpi_quarter(t); }, 0.25);
+  const double quarter = worst_ulps([](double t) { return wavecontact::generated::sinpi_quarter(t); }, 0.25);
   BOOST_TEST_MESSAGE("sinpi_quarter: max " << quarter << " ulp");
   BOOST_TEST(quarter <= 1.0);
 }

@@ -17,11 +17,9 @@ std::string plain(const ex& e) {
 }
 
 bool needs_parentheses(const ex& e) {
-  return GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) ||
-         GiNaC::is_a<GiNaC::power>(e) ||
+  return GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e) || GiNaC::is_a<GiNaC::power>(e) ||
          (GiNaC::is_a<GiNaC::numeric>(e) &&
-          (GiNaC::ex_to<GiNaC::numeric>(e).is_negative() ||
-           !GiNaC::ex_to<GiNaC::numeric>(e).is_integer()));
+          (GiNaC::ex_to<GiNaC::numeric>(e).is_negative() || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer()));
 }
 
 std::string wrapped(const ex& e) {
@@ -34,8 +32,7 @@ std::string wrapped(const ex& e) {
 std::vector<ex> sorted_operands(const ex& e) {
   std::vector<std::pair<std::string, ex>> keyed;
   for (const ex& operand : e) keyed.emplace_back(canonical_string(operand), operand);
-  std::stable_sort(keyed.begin(), keyed.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<ex> operands;
   for (auto& [key, operand] : keyed) operands.push_back(operand);
   return operands;
@@ -89,7 +86,7 @@ std::string canonical_string(const ex& e) {
     for (std::size_t i = 0; i < e.nops(); ++i) {
       const ex& argument = e.op(i);
       s += (i ? "," : "") + (argument.info(GiNaC::info_flags::rational_function) ? canonical_rational(argument)
-                                                                                : canonical_string(argument));
+                                                                                 : canonical_string(argument));
     }
     return s + ")";
   }

@@ -16,13 +16,13 @@ const GiNaC::realsymbol& t();      // t = v^2, variable of the inversion engine
 const GiNaC::realsymbol& s();      // s = u^2
 
 // Physical parameters.
-const GiNaC::realsymbol& E();   // reduced modulus E* (eq. 7)
-const GiNaC::realsymbol& H1();  // waviness height (eq. 2)
-const GiNaC::realsymbol& b1();  // waviness half-period (eq. 2)
-const GiNaC::realsymbol& m();   // shape parameter of the parametric wave curve (eq. 2)
-const GiNaC::realsymbol& H2();  // roughness height (eq. 3)
-const GiNaC::realsymbol& n();   // wavelength ratio b1/b2 (eq. 3), as a parameter
-const GiNaC::realsymbol& Cnx(); // cos(n x^), the roughness phase (eq. 15)
+const GiNaC::realsymbol& E();    // reduced modulus E* (eq. 7)
+const GiNaC::realsymbol& H1();   // waviness height (eq. 2)
+const GiNaC::realsymbol& b1();   // waviness half-period (eq. 2)
+const GiNaC::realsymbol& m();    // shape parameter of the parametric wave curve (eq. 2)
+const GiNaC::realsymbol& H2();   // roughness height (eq. 3)
+const GiNaC::realsymbol& n();    // wavelength ratio b1/b2 (eq. 3), as a parameter
+const GiNaC::realsymbol& Cnx();  // cos(n x^), the roughness phase (eq. 15)
 
 // Angle atoms of the well-conditioned (eq. 14) form; the runtime computes them
 // without cancellation (runtime/include/wavecontact/angles.hpp).

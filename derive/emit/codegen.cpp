@@ -38,7 +38,7 @@ enum class Op { Constant, Input, Add, Sub, Mul, Div, Neg, Sqrt, Call };
 
 struct Node {
   Op op;
-  std::string text;  // Constant literal, Input name, or a Call's function and leading arguments
+  std::string text;                    // Constant literal, Input name, or a Call's function and leading arguments
   int a = -1, b = -1, c = -1, d = -1;  // operands; a Call's arguments (two to four)
   bool operator<(const Node& o) const {
     return std::tie(op, text, a, b, c, d) < std::tie(o.op, o.text, o.a, o.b, o.c, o.d);
@@ -86,8 +86,7 @@ class Graph {
     }
     if (GiNaC::is_a<GiNaC::constant>(e)) {
       char buffer[64];
-      std::snprintf(buffer, sizeof buffer, "%.17g",
-                    GiNaC::ex_to<numeric>(e.evalf()).to_double());
+      std::snprintf(buffer, sizeof buffer, "%.17g", GiNaC::ex_to<numeric>(e.evalf()).to_double());
       return {false, constant(buffer)};
     }
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
@@ -172,7 +171,8 @@ class Graph {
       if (nodes_[node].op != Op::Div || over[nodes_[node].b].size() < 2) continue;
       const int denominator = nodes_[node].b;
       auto& numerators = over[denominator];
-      const bool all_negative = std::all_of(numerators.begin(), numerators.end(), [](const auto& t) { return t.first; });
+      const bool all_negative =
+          std::all_of(numerators.begin(), numerators.end(), [](const auto& t) { return t.first; });
       if (all_negative) {
         for (auto& t : numerators) t.first = false;
       }
@@ -206,8 +206,7 @@ class Graph {
         coefficient *= GiNaC::ex_to<numeric>(f);
         continue;
       }
-      if (GiNaC::is_a<GiNaC::constant>(f) ||
-          (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::constant>(f.op(0)))) {
+      if (GiNaC::is_a<GiNaC::constant>(f) || (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::constant>(f.op(0)))) {
         constants *= f;
         has_constants = true;
         continue;
@@ -219,8 +218,7 @@ class Graph {
         base = f.op(0);
         exponent = GiNaC::ex_to<numeric>(f.op(1));
       }
-      if (GiNaC::is_a<GiNaC::add>(base) && exponent.is_integer() &&
-          leading_term_negative(base.expand())) {
+      if (GiNaC::is_a<GiNaC::add>(base) && exponent.is_integer() && leading_term_negative(base.expand())) {
         base = (-base).expand();
         if (exponent.is_odd()) coefficient = -coefficient;
       }
@@ -278,9 +276,7 @@ class Graph {
 
 class Printer {
  public:
-  Printer(const std::vector<Node>& nodes, int root) : nodes_(nodes), uses_(nodes.size(), 0) {
-    count(root);
-  }
+  Printer(const std::vector<Node>& nodes, int root) : nodes_(nodes), uses_(nodes.size(), 0) { count(root); }
 
   // Temporaries, then `return value;` or, with a target, `const Scalar target = value;`.
   // The temporaries, then `<assignment><value of root>;`, e.g. assignment = "return ".
@@ -324,13 +320,27 @@ class Printer {
 
   static void tally(Op op, OpCounts& c) {
     switch (op) {
-      case Op::Add: case Op::Sub: ++c.additions; break;
-      case Op::Mul: ++c.multiplications; break;
-      case Op::Div: ++c.divisions; break;
-      case Op::Sqrt: ++c.square_roots; break;
-      case Op::Neg: ++c.negations; break;
-      case Op::Call: ++c.calls; break;
-      default: break;
+      case Op::Add:
+      case Op::Sub:
+        ++c.additions;
+        break;
+      case Op::Mul:
+        ++c.multiplications;
+        break;
+      case Op::Div:
+        ++c.divisions;
+        break;
+      case Op::Sqrt:
+        ++c.square_roots;
+        break;
+      case Op::Neg:
+        ++c.negations;
+        break;
+      case Op::Call:
+        ++c.calls;
+        break;
+      default:
+        break;
     }
   }
 
@@ -339,14 +349,26 @@ class Printer {
     const Node& n = nodes_[i];
     std::string s;
     switch (n.op) {
-      case Op::Constant: return "Scalar(" + n.text + ")";
-      case Op::Input: return n.text;
-      case Op::Add: s = expression(n.a) + " + " + expression(n.b); break;
-      case Op::Sub: s = expression(n.a) + " - " + expression(n.b); break;
-      case Op::Mul: s = expression(n.a) + " * " + expression(n.b); break;
-      case Op::Div: s = expression(n.a) + " / " + expression(n.b); break;
-      case Op::Neg: return "-" + expression(n.a);
-      case Op::Sqrt: return "sqrt(" + expression(n.a, true) + ")";
+      case Op::Constant:
+        return "Scalar(" + n.text + ")";
+      case Op::Input:
+        return n.text;
+      case Op::Add:
+        s = expression(n.a) + " + " + expression(n.b);
+        break;
+      case Op::Sub:
+        s = expression(n.a) + " - " + expression(n.b);
+        break;
+      case Op::Mul:
+        s = expression(n.a) + " * " + expression(n.b);
+        break;
+      case Op::Div:
+        s = expression(n.a) + " / " + expression(n.b);
+        break;
+      case Op::Neg:
+        return "-" + expression(n.a);
+      case Op::Sqrt:
+        return "sqrt(" + expression(n.a, true) + ")";
       case Op::Call:
         s = n.text + expression(n.a, true) + ", " + expression(n.b, true);
         if (n.c >= 0) s += ", " + expression(n.c, true);
@@ -417,11 +439,10 @@ std::string emit_function(const EmittedFunction& f, OpCounts* out_counts) {
   std::ostringstream os;
   std::istringstream doc(f.doc);
   for (std::string line; std::getline(doc, line);) os << "// " << line << "\n";
-  os << "// Total ops: " << counts.total() << " (" << counts.additions << " add, "
-     << counts.multiplications << " mul, " << counts.divisions << " div, "
-     << counts.square_roots << " sqrt, " << counts.negations << " neg"
-     << (counts.calls > 0 ? ", " + std::to_string(counts.calls) + " moment calls" : "") << "), "
-     << counts.temporaries << " temporaries\n";
+  os << "// Total ops: " << counts.total() << " (" << counts.additions << " add, " << counts.multiplications << " mul, "
+     << counts.divisions << " div, " << counts.square_roots << " sqrt, " << counts.negations << " neg"
+     << (counts.calls > 0 ? ", " + std::to_string(counts.calls) + " moment calls" : "") << "), " << counts.temporaries
+     << " temporaries\n";
   std::vector<std::string> parameters;  // a profile without parameters has none but out
   for (const ex& argument : f.arguments) {
     const std::string& name = GiNaC::ex_to<GiNaC::symbol>(argument).get_name();

@@ -18,9 +18,7 @@ struct OpCounts {
   int additions = 0, multiplications = 0, divisions = 0, square_roots = 0, negations = 0;
   int calls = 0;  // of the atoms: quadratic_moment, two_factor_moment (sub_interval.hpp), conjugate_logarithm
   int temporaries = 0;
-  int total() const {
-    return additions + multiplications + divisions + square_roots + negations + calls;
-  }
+  int total() const { return additions + multiplications + divisions + square_roots + negations + calls; }
 };
 
 // An intermediate result: `const Scalar target = value;`, where value may use the
@@ -37,7 +35,7 @@ struct Statement {
 // `const Scalar* array` whose elements array_element(array, k) the expressions may use.
 struct EmittedFunction {
   std::string name;
-  std::string doc;                          // comment lines above the function
+  std::string doc;                   // comment lines above the function
   std::vector<GiNaC::ex> arguments;  // symbols; parameter names are their names
   GiNaC::ex value;
   std::vector<Statement> statements = {};

@@ -26,8 +26,7 @@ GiNaC::ex single_term(const std::vector<RootTerm>& terms);
 void write_terms(std::ostream& os, const std::string& name, const std::vector<RootTerm>& terms);
 
 // Manifest lines "name[kappa1*kappa2] = coefficient" per monomial of a sum of radicals.
-void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum,
-               const Radicals& radicals);
+void write_sum(std::ostream& os, const std::string& name, const RadicalSum& sum, const Radicals& radicals);
 
 // Manifest lines per term c sqrt(r) I_{j,l}(z) or J_{j,l}(y, z): rational, radicand, and j, l, z,
 // 1 + z, and y, 1 + y.

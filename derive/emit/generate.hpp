@@ -10,7 +10,7 @@
 namespace wavecontact::derive {
 
 struct GeneratedFile {
-  std::string name;      // relative to the output directory
+  std::string name;  // relative to the output directory
   std::string contents;
 };
 

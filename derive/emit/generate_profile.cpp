@@ -26,8 +26,7 @@ std::string quoted(const std::string& text) {
   return q + "\"";
 }
 
-std::vector<ex> with_parameters(std::vector<ex> leading, const ProfileDerivation& d,
-                                const std::vector<ex>& trailing) {
+std::vector<ex> with_parameters(std::vector<ex> leading, const ProfileDerivation& d, const std::vector<ex>& trailing) {
   for (const auto& p : d.parameters) leading.push_back(p);
   leading.insert(leading.end(), trailing.begin(), trailing.end());
   return leading;
@@ -53,16 +52,15 @@ std::string names(const std::vector<ex>& arguments) {
 // <name>_cosine_coefficients, summed by runtime/include/wavecontact/harmonic_series.hpp, plus
 // <name>_rational_<quantity>, the closed form of the rest, when `rest`. `series` is the call
 // of the sum; `work` gives it K scratch values.
-std::string harmonic_wrapper(const std::string& quantity, const std::string& doc,
-                             const std::vector<ex>& arguments, const ProfileDerivation& d,
-                             const std::string& series, bool rest, bool work) {
+std::string harmonic_wrapper(const std::string& quantity, const std::string& doc, const std::vector<ex>& arguments,
+                             const ProfileDerivation& d, const std::string& series, bool rest, bool work) {
   const std::string& name = d.spec.name;
   const int K = static_cast<int>(d.forms.cosine.size()) - 1;
   std::vector<ex> parameters(d.parameters.begin(), d.parameters.end());
   std::string body = "  Scalar A[" + std::to_string(K + 1) + "];\n";
   if (work) body += "  Scalar work[" + std::to_string(K) + "];\n";
-  body += "  " + name + "_cosine_coefficients<Scalar>(" + names(parameters) +
-          (parameters.empty() ? "" : ", ") + "A);\n  return wavecontact::" + series;
+  body += "  " + name + "_cosine_coefficients<Scalar>(" + names(parameters) + (parameters.empty() ? "" : ", ") +
+          "A);\n  return wavecontact::" + series;
   if (rest) body += " +\n         " + name + "_rational_" + quantity + "<Scalar>(" + names(arguments) + ")";
   body += ";\n";
   std::ostringstream os;
@@ -99,20 +97,17 @@ std::string harmonic_evaluators(const ProfileDerivation& d, bool rational) {
   os << "\n"
      << harmonic_wrapper("pressure",
                          "Contact pressure p(x), |x| < a: eq. 12 solved exactly, the cosine sum in the "
-                         "Legendre-Dirichlet form" + plus_rest + "." + linear,
+                         "Legendre-Dirichlet form" +
+                             plus_rest + "." + linear,
                          arguments.pressure, d,
-                         "harmonic_series_pressure<Scalar>(A, " + K + ", work, E, b1, Ca, Cx, Sx, D)",
-                         rational, true)
+                         "harmonic_series_pressure<Scalar>(A, " + K + ", work, E, b1, Ca, Cx, Sx, D)", rational, true)
      << "\n"
-     << harmonic_wrapper("load", "Load per unit length P (eq. 6)" + plus_rest + "." + linear,
-                         arguments.load, d,
+     << harmonic_wrapper("load", "Load per unit length P (eq. 6)" + plus_rest + "." + linear, arguments.load, d,
                          "harmonic_series_load<Scalar>(A, " + K + ", work, E, Ca, Sa)", rational, true)
      << "\n"
      << harmonic_wrapper("load_slope_factor",
-                         "dP/dSa - dP/dCa, so that dP/da = (pi/b1) sin(a^) times this" + plus_rest +
-                             "." + linear,
-                         arguments.load, d,
-                         "harmonic_series_load_slope_factor<Scalar>(A, " + K + ", work, E, Ca)",
+                         "dP/dSa - dP/dCa, so that dP/da = (pi/b1) sin(a^) times this" + plus_rest + "." + linear,
+                         arguments.load, d, "harmonic_series_load_slope_factor<Scalar>(A, " + K + ", work, E, Ca)",
                          rational, true)
      << "\n"
      << (d.branches.branched
@@ -124,16 +119,12 @@ std::string harmonic_evaluators(const ProfileDerivation& d, bool rational) {
                                 "harmonic_series_full_contact_pressure<Scalar>(A, " + K + ", E, b1, Cx)", rational,
                                 false) +
                    "\n")
-     << harmonic_wrapper("height",
-                         "The profile in Cx = cos x^: y(x^) = Y(Cx)" + plus_rest + "." + linear,
-                         arguments.height, d,
-                         "harmonic_series_height<Scalar>(A, " + K + ", Cx)", rational, false)
+     << harmonic_wrapper("height", "The profile in Cx = cos x^: y(x^) = Y(Cx)" + plus_rest + "." + linear,
+                         arguments.height, d, "harmonic_series_height<Scalar>(A, " + K + ", Cx)", rational, false)
      << "\n"
-     << harmonic_wrapper("height_slope",
-                         "dY/dCx: the right-hand side of the multi-zone contact solver" + plus_rest +
-                             "." + linear,
-                         arguments.height, d,
-                         "harmonic_series_height_slope<Scalar>(A, " + K + ", Cx)", rational, false);
+     << harmonic_wrapper(
+            "height_slope", "dY/dCx: the right-hand side of the multi-zone contact solver" + plus_rest + "." + linear,
+            arguments.height, d, "harmonic_series_height_slope<Scalar>(A, " + K + ", Cx)", rational, false);
   return os.str();
 }
 
@@ -153,15 +144,15 @@ std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
        "branches (derive/engine/sub_interval.hpp), I_{j,l} from wavecontact/quadratic_moment.hpp.",
        load, as_ex(b.load_angle)},
       {name + "_near_branch_load",
-       "The same load with the top piece in its large-argument form: for " + name + "_top_piece_argument >= 1.",
-       load, as_ex(b.load_near_branch_angle)},
+       "The same load with the top piece in its large-argument form: for " + name + "_top_piece_argument >= 1.", load,
+       as_ex(b.load_near_branch_angle)},
       {name + "_top_piece_argument",
        "z of the top piece's I_{j,l} beyond the branch point (it grows without bound as the edge comes down\n"
        "to it): selects the forms that hold the digits.",
        argument, b.top_piece_argument},
       {name + "_beyond_branch_load_slope_factor",
-       "dP/dSa - dP/dCa of " + name + "_beyond_branch_load, for " + name + "_top_piece_argument < 0.",
-       load, as_ex(b.load_slope_factor)},
+       "dP/dSa - dP/dCa of " + name + "_beyond_branch_load, for " + name + "_top_piece_argument < 0.", load,
+       as_ex(b.load_slope_factor)},
       {name + "_beyond_branch_load_slope_factor_by_parts",
        "The same from the moments of (1 + v^2) g' + v g (no end point differentiated), for\n" + name +
            "_top_piece_argument >= 0.",
@@ -172,7 +163,8 @@ std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
        d.flank_height},
       {name + "_flank_height_slope", "dY/dCx on the flank.", height, d.flank_height_slope},
       {name + "_full_contact_pressure",
-       "p_fc(x) of full contact over the whole period, both branches (derive/formulas/full_contact.hpp): p = P/(2 b1) +\n"
+       "p_fc(x) of full contact over the whole period, both branches (derive/formulas/full_contact.hpp): p = P/(2 b1) "
+       "+\n"
        "p_fc, while it is >= 0; Psi from wavecontact/conjugate_logarithm.hpp. Its terms cancel next to a pole of\n"
        "the other branch's formula: beyond twice the own slope there, the side's form below.",
        evaluator_arguments(d).full_contact, d.full_contact_pressure},
@@ -182,8 +174,8 @@ std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
       {name + "_full_contact_pressure_flank",
        "The same for Cx below the branch point's cosine, the top's moment with its Cauchy factor (J'_{j,l}).",
        evaluator_arguments(d).full_contact, d.full_contact_pressure_flank}};
-  for (const EmittedFunction& f : pressure_beyond_branch(name + "_beyond_branch_pressure", b,
-                                                        evaluator_arguments(d).pressure)) {
+  for (const EmittedFunction& f :
+       pressure_beyond_branch(name + "_beyond_branch_pressure", b, evaluator_arguments(d).pressure)) {
     functions.push_back(f);
   }
   for (std::size_t i = 0; i < d.flank_pole_squares.size(); ++i) {
@@ -198,8 +190,8 @@ std::vector<EmittedFunction> branch_functions(const ProfileDerivation& d) {
 std::string adapter(const ProfileDerivation& d, const std::string& field, const std::string& signature,
                     const std::string& function, const std::string& call) {
   return "  e." + field + " = [](const double* " + (d.parameters.empty() ? "/*q*/" : "q") +
-         (signature.empty() ? "" : ", " + signature) + ") {\n    return " + d.spec.name + "_" + function +
-         "<double>(" + call + ");\n  };\n";
+         (signature.empty() ? "" : ", " + signature) + ") {\n    return " + d.spec.name + "_" + function + "<double>(" +
+         call + ");\n  };\n";
 }
 
 // e.full_contact_pressure. For a profile built with abs(): the whole form (jump apart) where the
@@ -216,11 +208,17 @@ std::string full_contact_adapter(const ProfileDerivation& d) {
   const std::string slope = "<double>(" + q + "Cx))";
   return "  e.full_contact_pressure = [](const double* " + std::string(d.parameters.empty() ? "/*q*/" : "q") +
          ", double E, double b1, double Cx) {\n"
-         "    const double top = std::fabs(" + name + "_height_slope" + slope + ", flank = std::fabs(" + name +
-         "_flank_height_slope" + slope + ";\n"
-         "    if (Cx > " + c + " && flank > 2 * top) return " + name + "_full_contact_pressure_top" + call + ";\n"
-         "    if (Cx < " + c + " && top > 2 * flank) return " + name + "_full_contact_pressure_flank" + call + ";\n"
-         "    return " + name + "_full_contact_pressure" + call + ";\n  };\n";
+         "    const double top = std::fabs(" +
+         name + "_height_slope" + slope + ", flank = std::fabs(" + name + "_flank_height_slope" + slope +
+         ";\n"
+         "    if (Cx > " +
+         c + " && flank > 2 * top) return " + name + "_full_contact_pressure_top" + call +
+         ";\n"
+         "    if (Cx < " +
+         c + " && top > 2 * flank) return " + name + "_full_contact_pressure_flank" + call +
+         ";\n"
+         "    return " +
+         name + "_full_contact_pressure" + call + ";\n  };\n";
 }
 
 // e.height, e.height_slope: the top's, or for a profile built with abs() the branch of Cx.
@@ -228,8 +226,8 @@ std::string height_adapter(const ProfileDerivation& d, const std::string& field)
   const std::string q = parameter_array(d), name = d.spec.name;
   std::string body = name + "_" + field + "<double>(" + q + "Cx)";
   if (d.branches.branched) {
-    body = "Cx >= " + double_literal(d.branches.cosine) + " ? " + body + "\n                                  : " +
-           name + "_flank_" + field + "<double>(" + q + "Cx)";
+    body = "Cx >= " + double_literal(d.branches.cosine) + " ? " + body +
+           "\n                                  : " + name + "_flank_" + field + "<double>(" + q + "Cx)";
   }
   return "  e." + field + " = [](const double* " + (d.parameters.empty() ? "/*q*/" : "q") +
          ", double Cx) {\n    return " + body + ";\n  };\n";
@@ -247,8 +245,7 @@ std::string branch_adapters(const ProfileDerivation& d) {
      << adapter(d, "branch.load_near_branch", load, "near_branch_load", E + "Ca, Sa")
      << adapter(d, "branch.top_piece_argument", "double Ca, double Sa", "top_piece_argument", q + "Ca, Sa")
      << adapter(d, "branch.load_slope_factor", load, "beyond_branch_load_slope_factor", E + "Ca, Sa")
-     << adapter(d, "branch.load_slope_factor_by_parts", load, "beyond_branch_load_slope_factor_by_parts",
-                E + "Ca, Sa")
+     << adapter(d, "branch.load_slope_factor_by_parts", load, "beyond_branch_load_slope_factor_by_parts", E + "Ca, Sa")
      << adapter(d, "branch.top_g", "double E, double v", "top_g", E + "v")
      << adapter(d, "branch.flank_g", "double E, double v", "flank_g", E + "v")
      << adapter(d, "branch.flank_height", "double Cx", "flank_height", q + "Cx")
@@ -257,16 +254,18 @@ std::string branch_adapters(const ProfileDerivation& d) {
   for (int side = 0; side < 2; ++side) {
     const std::string prefix = d.spec.name + "_beyond_branch_pressure_" + (side == 0 ? "top" : "flank") + "_";
     os << "  e.branch.cauchy_argument[" << side << "] = [](const double* " << unused
-       << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D, double* y) {\n    "
-       << prefix << "cauchy_argument<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, y);\n  };\n";
+       << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D, double* y) {\n    " << prefix
+       << "cauchy_argument<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, y);\n  };\n";
     for (int k = 0; k < 7; ++k) {
       os << "  e.branch.part_atoms[" << side << "][" << k << "] = [](const double* " << unused
-         << ", double E, double b1, double Ca, double Sa, double y, double one_plus_y, double* atoms) {\n    "
-         << prefix << branch_part_names[k] << "_atoms<double>(E, b1, " << q << "Ca, Sa, y, one_plus_y, atoms);\n  };\n"
-         << "  e.branch.atom_counts[" << side << "][" << k << "] = " << prefix << branch_part_names[k] << "_atoms_outputs;\n"
+         << ", double E, double b1, double Ca, double Sa, double y, double one_plus_y, double* atoms) {\n    " << prefix
+         << branch_part_names[k] << "_atoms<double>(E, b1, " << q << "Ca, Sa, y, one_plus_y, atoms);\n  };\n"
+         << "  e.branch.atom_counts[" << side << "][" << k << "] = " << prefix << branch_part_names[k]
+         << "_atoms_outputs;\n"
          << "  e.branch.pressure_parts[" << side << "][" << k << "] = [](const double* " << unused
          << ", double E, double b1, double Ca, double Sa, double Cx, double Sx, double D, const double* atoms) {\n"
-         << "    return " << prefix << branch_part_names[k] << "<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D, atoms);\n  };\n";
+         << "    return " << prefix << branch_part_names[k] << "<double>(E, b1, " << q
+         << "Ca, Sa, Cx, Sx, D, atoms);\n  };\n";
     }
     for (const char* argument : {"own_argument", "other_argument"}) {
       os << "  e.branch." << argument << "[" << side << "] = [](const double* " << unused
@@ -297,15 +296,13 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
   std::vector<EmittedFunction> functions;
   if (rational) {
     functions.push_back({rest + "_pressure",
-                         "Contact pressure p(x)" + of_rest +
-                             ", |x| < a: eq. 12 solved exactly for this profile.",
+                         "Contact pressure p(x)" + of_rest + ", |x| < a: eq. 12 solved exactly for this profile.",
                          arguments.pressure, single_term(forms.pressure_angle)});
-    functions.push_back({rest + "_load", "Load per unit length P (eq. 6)" + of_rest + ".",
-                         arguments.load, single_term(forms.load_angle)});
+    functions.push_back({rest + "_load", "Load per unit length P (eq. 6)" + of_rest + ".", arguments.load,
+                         single_term(forms.load_angle)});
     functions.push_back({rest + "_load_slope_factor",
-                         "dP/dSa - dP/dCa" + of_rest +
-                             ", so that dP/da = (pi/b1) sin(a^) times this.",
-                         arguments.load, single_term(forms.load_slope_factor)});
+                         "dP/dSa - dP/dCa" + of_rest + ", so that dP/da = (pi/b1) sin(a^) times this.", arguments.load,
+                         single_term(forms.load_slope_factor)});
     if (!d.branches.branched) {
       functions.push_back({rest + "_full_contact_pressure",
                            "p_fc(x) of full contact" + of_rest +
@@ -321,7 +318,8 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
   if (harmonic) {
     EmittedFunction cosine{name + "_cosine_coefficients",
                            "The cosine sum of the profile, y = sum_k A_k cos(k x^) + R(cos x^): out[k] = A_k, "
-                           "k = 0.." + std::to_string(K) + ".",
+                           "k = 0.." +
+                               std::to_string(K) + ".",
                            with_parameters({}, d, {}), 0};
     cosine.outputs = forms.cosine;
     functions.push_back(cosine);
@@ -346,11 +344,11 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
   os << ".\n// Derived by the Block-Keer change of variables and the bounded inversion (seed "
         "eqs. 4-6, 11, 12)";
   if (harmonic) {
-    os << ".\n// Its cosine sum, y = sum_{k<=" << K << "} A_k cos(k x^) + R(cos x^), has the "
+    os << ".\n// Its cosine sum, y = sum_{k<=" << K
+       << "} A_k cos(k x^) + R(cos x^), has the "
           "Legendre-Dirichlet form\n// (derive/profile/harmonic_part.hpp), summed by wavecontact/"
           "harmonic_series.hpp; "
-       << (rational ? "R(Cx) = " + canonical_rational(forms.rational_height) + " has"
-                    : "it is the whole profile.\n");
+       << (rational ? "R(Cx) = " + canonical_rational(forms.rational_height) + " has" : "it is the whole profile.\n");
   }
   if (rational) os << (harmonic ? "" : ":") << "\n//   g(v) = " << canonical_rational(d.forms.g) << "\n";
   if (d.branches.branched) {
@@ -374,8 +372,8 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
   const std::string q = parameter_array(d);
   os << "\n// The evaluators above behind the runtime's uniform interface.\n"
      << "inline ProfileEvaluator " << name << "_profile_evaluator() {\n"
-     << "  ProfileEvaluator e;\n  e.name = " << quoted(name) << ";\n  e.expression = "
-     << quoted(d.spec.expression) << ";\n  e.parameters = {";
+     << "  ProfileEvaluator e;\n  e.name = " << quoted(name) << ";\n  e.expression = " << quoted(d.spec.expression)
+     << ";\n  e.parameters = {";
   for (std::size_t i = 0; i < d.spec.parameters.size(); ++i) {
     os << (i ? ", " : "") << quoted(d.spec.parameters[i].name);
   }
@@ -386,18 +384,15 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
      << "    return " << name << "_pressure<double>(E, b1, " << q << "Ca, Sa, Cx, Sx, D);\n  };\n"
      << "  e.load = [](const double* " << unused << ", double E, double Ca, double Sa) {\n"
      << "    return " << name << "_load<double>(E, " << q << "Ca, Sa);\n  };\n"
-     << "  e.load_slope_factor = [](const double* " << unused
-     << ", double E, double Ca, double Sa) {\n"
+     << "  e.load_slope_factor = [](const double* " << unused << ", double E, double Ca, double Sa) {\n"
      << "    return " << name << "_load_slope_factor<double>(E, " << q << "Ca, Sa);\n  };\n"
-     << height_adapter(d, "height") << height_adapter(d, "height_slope")
-     << full_contact_adapter(d)
+     << height_adapter(d, "height") << height_adapter(d, "height_slope") << full_contact_adapter(d)
      << "  e.harmonic = " << d.forms.harmonic << ";\n"
-     << "  e.pole_squares = [](const double* " << (d.pole_squares.empty() ? "/*q*/" : unused)
-     << ", double* " << (d.pole_squares.empty() ? "/*tau*/" : "tau") << ") {\n";
+     << "  e.pole_squares = [](const double* " << (d.pole_squares.empty() ? "/*q*/" : unused) << ", double* "
+     << (d.pole_squares.empty() ? "/*tau*/" : "tau") << ") {\n";
   for (std::size_t i = 0; i < d.pole_squares.size(); ++i) {
     const std::string args = q.empty() ? "" : q.substr(0, q.size() - 2);
-    os << "    tau[" << i << "] = " << name << "_pole_square_" << i << "<double>(" << args
-       << ");\n";
+    os << "    tau[" << i << "] = " << name << "_pole_square_" << i << "<double>(" << args << ");\n";
   }
   os << "  };\n  e.pole_count = " << d.pole_squares.size() << ";\n"
      << (d.branches.branched ? branch_adapters(d) : "") << "  return e;\n}\n"
@@ -407,8 +402,8 @@ std::string header(const ProfileDerivation& d, const std::string& command) {
 
 std::string manifest(const ProfileDerivation& d, const std::string& command) {
   std::ostringstream os;
-  os << banner("#", command)
-     << "#\n# Profile " << d.spec.name << ", every derived expression in GiNaC syntax (symbols as\n"
+  os << banner("#", command) << "#\n# Profile " << d.spec.name
+     << ", every derived expression in GiNaC syntax (symbols as\n"
         "# in manifest.txt; the parameters are listed with the sample values that fixed signs).\n";
   os << "profile.expression = " << d.spec.expression << "\n";
   for (const auto& p : d.spec.parameters) os << "parameter." << p.name << ".sample = " << p.sample << "\n";

@@ -115,7 +115,8 @@ void remove_stale_temporaries(int dir, const fs::path& resolved, const std::vect
     if (name.empty() || name[0] != '.' || marker == std::string::npos) continue;
     const std::string target = name.substr(1, marker - 1), pid = name.substr(marker + temporary_marker.size());
     if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
-    const bool written_by_us = std::any_of(files.begin(), files.end(), [&](const GeneratedFile& f) { return f.name == target; });
+    const bool written_by_us =
+        std::any_of(files.begin(), files.end(), [&](const GeneratedFile& f) { return f.name == target; });
     if (written_by_us && ::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) {
       ::unlinkat(dir, name.c_str(), 0);
     }

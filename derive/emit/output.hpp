@@ -32,7 +32,6 @@ struct OutputError : std::runtime_error {
 // Unless `force`, refuses the root, the current and the home directory, a non-empty
 // directory that holds no file written by wavecontact-derive (its banner on the first line),
 // and a file to be replaced that does not carry that banner.
-void write_generated_files(const std::filesystem::path& directory, const std::vector<GeneratedFile>& files,
-                           bool force);
+void write_generated_files(const std::filesystem::path& directory, const std::vector<GeneratedFile>& files, bool force);
 
 }  // namespace wavecontact::derive

@@ -18,17 +18,14 @@ std::vector<ex> legendre_statements(int last, std::vector<Statement>& statements
   std::vector<ex> P{1, sym::Ca()};
   for (int k = 1; k < last; ++k) {
     const GiNaC::realsymbol target("P" + std::to_string(k + 1));
-    statements.push_back({target, numeric(2 * k + 1, k + 1) * sym::Ca() * P[k] -
-                                      numeric(k, k + 1) * P[k - 1]});
+    statements.push_back({target, numeric(2 * k + 1, k + 1) * sym::Ca() * P[k] - numeric(k, k + 1) * P[k - 1]});
     P.push_back(target);
   }
   P.resize(last + 1);
   return P;
 }
 
-std::string program_name(int n, const char* quantity) {
-  return "roughness_n" + std::to_string(n) + "_" + quantity;
-}
+std::string program_name(int n, const char* quantity) { return "roughness_n" + std::to_string(n) + "_" + quantity; }
 
 }  // namespace
 
@@ -48,8 +45,7 @@ EmittedFunction roughness_pressure_program(int n) {
     statements.push_back({b_j, d_j + b});
     b = b_j;
   }
-  const ex value = GiNaC::Pi / sym::b1() * sym::E() * sym::H2() * n / 2 *
-                   GiNaC::sqrt(sym::D() * (1 + sym::Cx())) * d;
+  const ex value = GiNaC::Pi / sym::b1() * sym::E() * sym::H2() * n / 2 * GiNaC::sqrt(sym::D() * (1 + sym::Cx())) * d;
   return {program_name(n, "pressure"),
           "Exact pressure of the roughness harmonic, n = " + std::to_string(n) +
               " (eq. 17 solved exactly, Legendre-Dirichlet form), |x| < a <= b1/2.",

@@ -46,10 +46,9 @@ std::string evaluator(const BoundedSine& sine) {
   const int fmas = static_cast<int>(c.size());  // c.size() - 2 in the tail, lo's, hi's
   os << "// sin(pi t) for |t| <= " << sine.bound << ": degree " << c.size() - 1
      << " in u = t^2, relative error of the polynomial\n// with these coefficients "
-     << scientific(sine.relative_error.to_double()) << " ("
-     << fixed(sine.relative_error.to_double() / epsilon) << " eps); t outside the bound "
-     << "gives a finite, meaningless value.\n// Total ops: " << fmas + 2 << " (" << fmas
-     << " fma, 2 mul)\n"
+     << scientific(sine.relative_error.to_double()) << " (" << fixed(sine.relative_error.to_double() / epsilon)
+     << " eps); t outside the bound "
+     << "gives a finite, meaningless value.\n// Total ops: " << fmas + 2 << " (" << fmas << " fma, 2 mul)\n"
      << "template <typename Scalar>\ninline Scalar " << sine.name << "(const Scalar& t) {\n"
      << "  using std::fma;\n  const Scalar u = t * t;\n"
      << "  const Scalar tail = " << tail << ";\n"
@@ -94,7 +93,8 @@ std::string trigonometry_header(const BoundedSine& quarter, const std::string& c
         "(runtime/src/pressure_simd_kernels.hpp,\n// which take every atom from it by exact "
         "identities), without range reduction: a minimax\n// polynomial t p(t^2) in relative "
         "error for |t| <= 1/4 (Remez exchange at "
-     << working_digits << " digits, derive/formulas/minimax.cpp),\n// the coefficients rounded to "
+     << working_digits
+     << " digits, derive/formulas/minimax.cpp),\n// the coefficients rounded to "
         "doubles, p's constant term as two doubles (hi + lo), and the error\n// measured again "
         "with the rounded values (bound: 2^-55 = eps/8). tests/trigonometry_test.cpp measures\n"
         "// it as evaluated, within 1 ulp.\n"

@@ -13,11 +13,11 @@
 namespace wavecontact::derive {
 
 struct BoundedSine {
-  std::string name;                        // of the emitted function
-  GiNaC::numeric bound;                    // |t| <= bound
+  std::string name;                          // of the emitted function
+  GiNaC::numeric bound;                      // |t| <= bound
   std::vector<GiNaC::numeric> coefficients;  // of u = t^2, each a double (exact rational)
-  GiNaC::numeric lead_low;                 // p_0 = coefficients[0] + lead_low (double-double)
-  GiNaC::numeric relative_error;           // max |t p(t^2)/sin(pi t) - 1| with these values
+  GiNaC::numeric lead_low;                   // p_0 = coefficients[0] + lead_low (double-double)
+  GiNaC::numeric relative_error;             // max |t p(t^2)/sin(pi t) - 1| with these values
 };
 
 // Relative error the rounded polynomials must reach: 2^-55, an eighth of double's epsilon.

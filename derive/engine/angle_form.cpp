@@ -36,7 +36,8 @@ numeric value_at_sample(const ex& e, const GiNaC::exmap& sample) {
   const ex value = atoms_in_v_variables(e).subs(sample).evalf();
   if (!GiNaC::is_a<numeric>(value)) {
     std::ostringstream os;
-    os << "angle form: cannot evaluate " << e << " at the sample point (every parameter "
+    os << "angle form: cannot evaluate " << e
+       << " at the sample point (every parameter "
           "needs a sample value)";
     throw std::logic_error(os.str());
   }
@@ -45,9 +46,8 @@ numeric value_at_sample(const ex& e, const GiNaC::exmap& sample) {
 
 // The atom that a factor is a rational multiple of, or the factor itself.
 ex as_atom(const ex& f) {
-  const std::pair<ex, ex> atoms[] = {{1 - sym::Ca(), sym::Sa()},
-                                     {1 - sym::Cx(), sym::Sx()},
-                                     {sym::Cx() - sym::Ca(), sym::D()}};
+  const std::pair<ex, ex> atoms[] = {
+      {1 - sym::Ca(), sym::Sa()}, {1 - sym::Cx(), sym::Sx()}, {sym::Cx() - sym::Ca(), sym::D()}};
   for (const auto& [polynomial, atom] : atoms) {
     const ex ratio = (f / polynomial).normal();
     if (GiNaC::is_a<numeric>(ratio)) return ratio * atom;
@@ -71,7 +71,7 @@ GiNaC::exmap sample_point_v() {
   // x^ = 0.4, a^ = 1.2 (below pi/2) as exact rationals of their half-angle tangents;
   // m = 1/2 and unit-ish physical parameters.
   GiNaC::exmap point;
-  point[sym::s()] = numeric(1, 25);      // u = 1/5
+  point[sym::s()] = numeric(1, 25);  // u = 1/5
   point[sym::u()] = numeric(1, 5);
   point[sym::alpha()] = numeric(7, 10);  // alpha = 0.7 -> a^ ~ 1.22
   point[sym::m()] = numeric(1, 2);
@@ -84,12 +84,11 @@ GiNaC::exmap sample_point_v() {
 ex atoms_in_v_variables(const ex& e) {
   const ex s = sym::s(), alpha2 = GiNaC::pow(sym::alpha(), 2);
   const ex Cx = (1 - s) / (1 + s), Ca = (1 - alpha2) / (1 + alpha2);
-  return e.subs(GiNaC::lst{sym::Sa() == 1 - Ca, sym::Sx() == 1 - Cx, sym::D() == Cx - Ca,
-                           sym::Ca() == Ca, sym::Cx() == Cx});
+  return e.subs(
+      GiNaC::lst{sym::Sa() == 1 - Ca, sym::Sx() == 1 - Cx, sym::D() == Cx - Ca, sym::Ca() == Ca, sym::Cx() == Cx});
 }
 
-std::vector<RootTerm> root_terms(const RadicalSum& closed, const Radicals& radicals,
-                                 const ex& prefactor_square) {
+std::vector<RootTerm> root_terms(const RadicalSum& closed, const Radicals& radicals, const ex& prefactor_square) {
   std::vector<RootTerm> terms;
   for (const auto& [mask, c] : closed.terms()) {
     ex radicand = prefactor_square;
@@ -161,8 +160,7 @@ AngleCosines in_angle_cosines(const ex& p) {
   result.degree_s = in_square.degree(s);
   result.degree_alpha_squared = in_square.degree(alpha_squared);
   const ex in_Cx = times_cosine_denominator(in_square, s, sym::Cx(), result.degree_s);
-  result.polynomial =
-      times_cosine_denominator(in_Cx, alpha_squared, sym::Ca(), result.degree_alpha_squared);
+  result.polynomial = times_cosine_denominator(in_Cx, alpha_squared, sym::Ca(), result.degree_alpha_squared);
   return result;
 }
 
@@ -263,14 +261,12 @@ ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form, bool&
                        const GiNaC::exmap& sample) {
   const ex angle_rational = atoms_in_v_variables(angle_form.rational);
   const ex angle_radicand = atoms_in_v_variables(angle_form.radicand);
-  const ex residual = (GiNaC::pow(v_form.rational, 2) * v_form.radicand -
-                       GiNaC::pow(angle_rational, 2) * angle_radicand)
-                          .normal();
+  const ex residual =
+      (GiNaC::pow(v_form.rational, 2) * v_form.radicand - GiNaC::pow(angle_rational, 2) * angle_radicand).normal();
   const ex point_v = v_form.rational.subs(sample).evalf();
   const ex point_angle = angle_rational.subs(sample).evalf();
   sign_agrees = GiNaC::is_a<numeric>(point_v) && GiNaC::is_a<numeric>(point_angle) &&
-                GiNaC::ex_to<numeric>(point_v).is_negative() ==
-                    GiNaC::ex_to<numeric>(point_angle).is_negative();
+                GiNaC::ex_to<numeric>(point_v).is_negative() == GiNaC::ex_to<numeric>(point_angle).is_negative();
   return residual;
 }
 

@@ -43,8 +43,8 @@ GiNaC::ex as_ex(const RootTerm& term);
 // functions after the atoms are written back in u and alpha, and the signs agree at a
 // point of the domain. Returns the normal form of the difference of squares (zero when
 // equal) and sets sign_agrees.
-GiNaC::ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form,
-                              bool& sign_agrees, const GiNaC::exmap& sample = sample_point_v());
+GiNaC::ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form, bool& sign_agrees,
+                              const GiNaC::exmap& sample = sample_point_v());
 
 // The atoms written back in u (via s) and alpha.
 GiNaC::ex atoms_in_v_variables(const GiNaC::ex& e);

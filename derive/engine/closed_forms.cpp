@@ -32,8 +32,7 @@ ClosedForms derive_closed_forms(const ex& y, const GiNaC::exmap& sample) {
   return derive_closed_forms(y, split_harmonic_part(in_cosine(y)), sample);
 }
 
-ClosedForms derive_closed_forms(const ex& y, const HarmonicSplit& parts,
-                                const GiNaC::exmap& sample) {
+ClosedForms derive_closed_forms(const ex& y, const HarmonicSplit& parts, const GiNaC::exmap& sample) {
   ClosedForms d;
   d.profile = y;
   const GiNaC::realsymbol& c = sym::Cx();

@@ -18,11 +18,11 @@ namespace wavecontact::derive {
 // R, the part whose poles lie off v^2 = -1 (the whole profile when cosine is empty).
 struct ClosedForms {
   Radicals radicals;
-  GiNaC::ex profile;     // y(x^), even in sym::x(), rational in cos(k x^), sin(k x^)
+  GiNaC::ex profile;              // y(x^), even in sym::x(), rational in cos(k x^), sin(k x^)
   std::vector<GiNaC::ex> cosine;  // A_0..A_K, or empty
-  GiNaC::ex g;           // eq. 11: g(v) = -(E*/2) R'(x^(v))
-  RadicalSum inversion;  // eq. 12 solved: p^(u) = sqrt(alpha^2 - u^2) * inversion(s)
-  RadicalSum load;       // eq. 6: P(alpha)
+  GiNaC::ex g;                    // eq. 11: g(v) = -(E*/2) R'(x^(v))
+  RadicalSum inversion;           // eq. 12 solved: p^(u) = sqrt(alpha^2 - u^2) * inversion(s)
+  RadicalSum load;                // eq. 6: P(alpha)
   // In physical units, p(x) = (pi/b1) p^(x^); v-form and angle form.
   std::vector<RootTerm> pressure_v, pressure_angle;
   std::vector<RootTerm> load_v, load_angle;
@@ -32,12 +32,11 @@ struct ClosedForms {
   // multi-zone contact solver of the runtime sees it (runtime/src/interval_inversion.hpp).
   GiNaC::ex height, height_slope;
   GiNaC::ex rational_height, rational_height_slope;  // R(Cx) and dR/dCx
-  long harmonic = 1;  // the degree of Y in cos x^: the highest k of its harmonics
+  long harmonic = 1;                                 // the degree of Y in cos x^: the highest k of its harmonics
 };
 
 // Every term of a closed form in angle atoms (signs fixed at `sample`).
-std::vector<RootTerm> in_angles(const std::vector<RootTerm>& v_form,
-                                const GiNaC::exmap& sample = sample_point_v());
+std::vector<RootTerm> in_angles(const std::vector<RootTerm>& v_form, const GiNaC::exmap& sample = sample_point_v());
 
 // dF/dSa - dF/dCa of one term c sqrt(r): [(Dc r + c Dr / 2) / r] sqrt(r), so that
 // dF/da^ = sin(a^) times it.

@@ -23,16 +23,15 @@ ex polynomial_moment(const ex& polynomial, const GiNaC::symbol& t) {
   for (int k = 0; k <= degree; ++k) {
     const ex c = polynomial.coeff(t, k);
     if (c.is_zero()) continue;
-    sum += c * GiNaC::pow(alpha, 2 * k) * GiNaC::binomial(numeric(2 * k), numeric(k)) /
-           GiNaC::pow(numeric(4), k);
+    sum += c * GiNaC::pow(alpha, 2 * k) * GiNaC::binomial(numeric(2 * k), numeric(k)) / GiNaC::pow(numeric(4), k);
   }
   return sum;
 }
 
 // The first `count` Taylor coefficients at t = tau of the rational function
 // numerator/denominator (polynomials in t): shifted coefficients, then series division.
-std::vector<ex> taylor_coefficients(const ex& numerator, const ex& denominator, const ex& tau,
-                                    int count, const GiNaC::symbol& t) {
+std::vector<ex> taylor_coefficients(const ex& numerator, const ex& denominator, const ex& tau, int count,
+                                    const GiNaC::symbol& t) {
   auto shifted = [&](const ex& polynomial) {
     // c_i of p(tau + h) = sum_i c_i h^i: c_i = sum_k p_k C(k, i) tau^(k - i).
     std::vector<ex> c(count, ex(0));
@@ -65,8 +64,8 @@ std::vector<ex> taylor_coefficients(const ex& numerator, const ex& denominator, 
 //   E1(tau) sum_n psi_{order-1-n} P_n / q0^n,  psi_i the Taylor coefficients of Psi,
 // E1(tau) = -kappa/(tau kappa^2), one radical times a rational function: no derivatives
 // of E1, whose expressions swell with the order.
-RadicalSum pole_moment(const ex& Psi_numerator, const ex& Psi_denominator, const ex& tau,
-                       int order, const GiNaC::symbol& t, Radicals& radicals) {
+RadicalSum pole_moment(const ex& Psi_numerator, const ex& Psi_denominator, const ex& tau, int order,
+                       const GiNaC::symbol& t, Radicals& radicals) {
   const ex alpha_squared = GiNaC::pow(sym::alpha(), 2);
   const ex q0 = (tau * (tau - alpha_squared)).expand(), q1 = (2 * tau - alpha_squared).expand();
   const std::vector<ex> psi = taylor_coefficients(Psi_numerator, Psi_denominator, tau, order, t);
@@ -74,25 +73,21 @@ RadicalSum pole_moment(const ex& Psi_numerator, const ex& Psi_denominator, const
   ex sum = 0;                    // sum_n psi_{order-1-n} P_n q0^(order-1-n)
   for (int n = 0; n < order; ++n) {
     sum += psi[order - 1 - n] * current * GiNaC::pow(q0, order - 1 - n);
-    const ex next = (-(q1 * numeric(2 * n + 1, 2) * current + n * q0 * previous) /
-                     numeric(n + 1)).expand();
+    const ex next = (-(q1 * numeric(2 * n + 1, 2) * current + n * q0 * previous) / numeric(n + 1)).expand();
     previous = current;
     current = next;
   }
   const unsigned index = radicals.index_of(tau);
   // E1(tau) / q0^(order-1) = -kappa/(tau kappa^2 q0^(order-1)) = -kappa tau / q0^order.
-  return RadicalSum::monomial(RadicalSum::Mask{1} << index,
-                              (-tau * sum / GiNaC::pow(q0, order)).normal());
+  return RadicalSum::monomial(RadicalSum::Mask{1} << index, (-tau * sum / GiNaC::pow(q0, order)).normal());
 }
 
 // M[numerator/(denominator constant)] for polynomials numerator, denominator in t and a
 // t-free constant (no radicals): a quotient taken as it is, without a gcd.
-RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex& constant,
-                           Radicals& radicals) {
+RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex& constant, Radicals& radicals) {
   const GiNaC::symbol& t = sym::t();
   if (!numerator.is_polynomial(t) || !denominator.is_polynomial(t)) {
-    throw std::invalid_argument("weighted_moment: integrand is not rational in t: " +
-                                printed(numerator / denominator));
+    throw std::invalid_argument("weighted_moment: integrand is not rational in t: " + printed(numerator / denominator));
   }
   const ex polynomial_part = GiNaC::quo(numerator, denominator, t);
   const ex remainder = GiNaC::rem(numerator, denominator, t);
@@ -101,9 +96,8 @@ RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex&
 
   const ex factored = GiNaC::factor(denominator);
   // Poles in a fixed order, so radicals are numbered the same on every run.
-  const std::vector<ex> factors = GiNaC::is_a<GiNaC::mul>(factored)
-                                      ? sorted_operands(factored)
-                                      : std::vector<ex>{factored};
+  const std::vector<ex> factors =
+      GiNaC::is_a<GiNaC::mul>(factored) ? sorted_operands(factored) : std::vector<ex>{factored};
   for (const ex& factor_power : factors) {
     const bool is_power = GiNaC::is_a<GiNaC::power>(factor_power);
     const ex base = is_power ? factor_power.op(0) : factor_power;
@@ -111,17 +105,15 @@ RadicalSum fraction_moment(const ex& numerator, const ex& denominator, const ex&
     if (!is_power && !factor_power.has(t)) continue;
     const int order = is_power ? GiNaC::ex_to<numeric>(factor_power.op(1)).to_int() : 1;
     if (base.degree(t) != 1) {
-      throw std::invalid_argument(
-          "weighted_moment: denominator factor " + printed(base) +
-          " is not linear in v^2; only poles t = tau in v^2 over the rationals of the "
-          "parameters are supported");
+      throw std::invalid_argument("weighted_moment: denominator factor " + printed(base) +
+                                  " is not linear in v^2; only poles t = tau in v^2 over the rationals of the "
+                                  "parameters are supported");
     }
     const ex a1 = base.coeff(t, 1), a0 = base.coeff(t, 0);
     const ex tau = (-a0 / a1).normal();
     const ex rest = GiNaC::quo(denominator, GiNaC::pow(base, order).expand(), t);
-    result += pole_moment(remainder, (GiNaC::pow(a1, order) * rest).expand(), tau, order, t,
-                          radicals)
-                  .scaled(1 / constant);
+    result +=
+        pole_moment(remainder, (GiNaC::pow(a1, order) * rest).expand(), tau, order, t, radicals).scaled(1 / constant);
   }
   return result;
 }
@@ -158,8 +150,7 @@ ex even_in_square(const ex& e, const GiNaC::symbol& v, const GiNaC::symbol& t) {
 RadicalSum weighted_moment(const RadicalSum& Phi, Radicals& radicals) {
   RadicalSum result;
   for (const auto& [mask, coefficient] : Phi.terms()) {
-    result += RadicalSum::monomial(mask, 1).times(rational_moment(coefficient, radicals),
-                                                  radicals);
+    result += RadicalSum::monomial(mask, 1).times(rational_moment(coefficient, radicals), radicals);
   }
   return result.normalized();
 }
@@ -185,8 +176,7 @@ RadicalSum load_integral(const RadicalSum& I, Radicals& radicals) {
   // (pi stays outside: the engine's polynomial algebra is over the rationals.)
   const GiNaC::symbol &t = sym::t(), &s = sym::s();
   const ex weight = 2 * (GiNaC::pow(sym::alpha(), 2) - t) / (1 + t);
-  const RadicalSum integrand =
-      I.transformed([&](const ex& c) { return (c.subs(s == t) * weight).normal(); });
+  const RadicalSum integrand = I.transformed([&](const ex& c) { return (c.subs(s == t) * weight).normal(); });
   return weighted_moment(integrand, radicals).scaled(GiNaC::Pi);
 }
 

@@ -15,9 +15,8 @@ unsigned Radicals::index_of(const ex& tau) {
   }
   if (entries_.size() >= 64) throw std::length_error("Radicals: more than 64 distinct poles");
   const ex alpha = sym::alpha();
-  entries_.push_back(
-      {tau.normal(), (1 - GiNaC::pow(alpha, 2) / tau).normal(),
-       GiNaC::realsymbol("kappa" + std::to_string(entries_.size() + 1))});
+  entries_.push_back({tau.normal(), (1 - GiNaC::pow(alpha, 2) / tau).normal(),
+                      GiNaC::realsymbol("kappa" + std::to_string(entries_.size() + 1))});
   return static_cast<unsigned>(entries_.size() - 1);
 }
 
@@ -83,8 +82,7 @@ ex RadicalSum::to_ex(const Radicals& radicals) const {
 }
 
 ex RadicalSum::with_roots(const Radicals& radicals) const {
-  return assemble(terms_, radicals,
-                  [&](unsigned i) -> ex { return GiNaC::sqrt(radicals.square(i)); });
+  return assemble(terms_, radicals, [&](unsigned i) -> ex { return GiNaC::sqrt(radicals.square(i)); });
 }
 
 }  // namespace wavecontact::derive

@@ -25,8 +25,7 @@ namespace {
 numeric quadratic_moment_value(int j, int l, const numeric& z) {
   if (GiNaC::abs(z) <= numeric(1, 10)) {
     // sum_k C(l+k-1, k) (-z)^k/(2j+2k+1): terms fall by a tenth or more.
-    const numeric tolerance =
-        GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -static_cast<long>(GiNaC::Digits) - 5));
+    const numeric tolerance = GiNaC::ex_to<numeric>(GiNaC::pow(numeric(10), -static_cast<long>(GiNaC::Digits) - 5));
     numeric sum = 0, coefficient = 1;
     for (int k = 0;; ++k) {
       const numeric term = coefficient / (2 * j + 2 * k + 1);
@@ -133,7 +132,8 @@ ex two_factor_evalf(bool edge, const ex& j, const ex& l, const ex& y, const ex& 
   const ex y_value = y.evalf(), z_value = z.evalf();
   if (!all_real({j, l, y_value, z_value})) {
     return (edge ? two_factor_edge_moment(j, l, y, one_plus_y, z, one_plus_z)
-                 : two_factor_moment(j, l, y, one_plus_y, z, one_plus_z)).hold();
+                 : two_factor_moment(j, l, y, one_plus_y, z, one_plus_z))
+        .hold();
   }
   const numeric yy = GiNaC::ex_to<numeric>(y_value), zz = GiNaC::ex_to<numeric>(z_value);
   if (yy <= -1 || zz <= -1) throw std::domain_error("two_factor_moment: y <= -1 or z <= -1");
@@ -170,9 +170,8 @@ std::vector<MomentTerm> moment_in_T(const ex& Psi, const GiNaC::symbol& S, const
   const ex factored = GiNaC::factor(nd.op(1));
   ex base = 1, constant = 1, cauchy = 0;
   int order = 0;
-  const std::vector<ex> factors = GiNaC::is_a<GiNaC::mul>(factored)
-                                      ? sorted_operands(factored)
-                                      : std::vector<ex>{factored};
+  const std::vector<ex> factors =
+      GiNaC::is_a<GiNaC::mul>(factored) ? sorted_operands(factored) : std::vector<ex>{factored};
   for (const ex& f : factors) {
     const bool is_power = GiNaC::is_a<GiNaC::power>(f);
     const ex b = is_power ? f.op(0) : f;
@@ -291,8 +290,8 @@ std::vector<MomentTerm> large_argument_form(const MomentTerm& term) {
   const ex K = GiNaC::Pi * half_gamma(j) * half_gamma(n) / (2 * GiNaC::factorial(l - 1));
   const ex& z = term.z;
   return {moment_term((term.rational * K * GiNaC::pow(z, -j)).normal(), (term.radicand / z).normal(), 0, 0, 0, 0),
-          moment_term((-term.rational * GiNaC::pow(z, -l)).normal(), term.radicand, l - j - 1, l,
-                      (1 / z).normal(), (term.one_plus_z / z).normal())};
+          moment_term((-term.rational * GiNaC::pow(z, -l)).normal(), term.radicand, l - j - 1, l, (1 / z).normal(),
+                      (term.one_plus_z / z).normal())};
 }
 
 std::vector<MomentTerm> inner_moment(const ex& Phi, const ex& beta, bool edge_basis) {

@@ -32,8 +32,8 @@ MomentTerm moment_in_angles(const MomentTerm& term, const GiNaC::exmap& sample) 
   const auto in_atoms = [&sample](const ex& e) {
     return e.has(sym::s()) ? as_ex(to_angle_atoms({e, 1}, sample)) : in_zone_cosine(e);
   };
-  MomentTerm angle = moment_term(factor.rational, factor.radicand, term.j, term.l, in_atoms(term.z),
-                                 in_atoms(term.one_plus_z));
+  MomentTerm angle =
+      moment_term(factor.rational, factor.radicand, term.j, term.l, in_atoms(term.z), in_atoms(term.one_plus_z));
   angle.edge = term.edge;
   if (term.cauchy) {
     angle.cauchy = true;
@@ -79,8 +79,8 @@ std::vector<MomentTerm> moment_slope_factor(const MomentTerm& term) {
   std::vector<MomentTerm> terms{moment_term(factor.rational, factor.radicand, term.j, term.l, term.z, term.one_plus_z)};
   if (term.l > 0) {
     const ex Dz = term.z.diff(sym::Sa()) - term.z.diff(sym::Ca());
-    terms.push_back(moment_term((-term.l * term.rational * Dz).normal(), term.radicand, term.j + 1, term.l + 1,
-                                term.z, term.one_plus_z));
+    terms.push_back(moment_term((-term.l * term.rational * Dz).normal(), term.radicand, term.j + 1, term.l + 1, term.z,
+                                term.one_plus_z));
   }
   return terms;
 }
@@ -148,15 +148,13 @@ BeyondBranch::SidePressure side_in_angles(const BeyondBranch::SidePressure& v, c
 
 }  // namespace
 
-BeyondBranch derive_beyond_branch(const ex& top_g, const ex& flank_g, const ex& beta,
-                                  const GiNaC::exmap& sample) {
+BeyondBranch derive_beyond_branch(const ex& top_g, const ex& flank_g, const ex& beta, const GiNaC::exmap& sample) {
   const GiNaC::exmap beyond = sample_beyond_branch(sample, beta);
   BeyondBranch d;
   d.beta = beta;
   d.top_g = top_g;
   d.flank_g = flank_g;
-  const PieceMoments load =
-      piece_moments(load_integrand(top_g), load_integrand(flank_g), beta, 2 * GiNaC::Pi);
+  const PieceMoments load = piece_moments(load_integrand(top_g), load_integrand(flank_g), beta, 2 * GiNaC::Pi);
   d.load_v = both_pieces(load);
   d.load_angle = moments_in_angles(d.load_v, beyond);
   PieceMoments near_branch{{}, load.flank};
@@ -167,8 +165,8 @@ BeyondBranch derive_beyond_branch(const ex& top_g, const ex& flank_g, const ex& 
   for (const MomentTerm& term : d.load_angle) {
     for (const MomentTerm& part : moment_slope_factor(term)) d.load_slope_factor.push_back(part);
   }
-  d.load_slope_factor_by_parts_v = both_pieces(
-      piece_moments(load_slope_integrand(top_g), load_slope_integrand(flank_g), beta, GiNaC::Pi / 2));
+  d.load_slope_factor_by_parts_v =
+      both_pieces(piece_moments(load_slope_integrand(top_g), load_slope_integrand(flank_g), beta, GiNaC::Pi / 2));
   d.load_slope_factor_by_parts = moments_in_angles(d.load_slope_factor_by_parts_v, beyond);
   d.top_piece_argument = top_argument(load.top);
   const GiNaC::symbol& v = sym::v();

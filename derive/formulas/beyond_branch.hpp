@@ -14,8 +14,8 @@
 namespace wavecontact::derive {
 
 struct BeyondBranch {
-  GiNaC::ex beta;                 // v = tan(x^/2) at the change of branch
-  GiNaC::ex top_g, flank_g;       // eq. 11 of each branch, rational in sym::v()
+  GiNaC::ex beta;            // v = tan(x^/2) at the change of branch
+  GiNaC::ex top_g, flank_g;  // eq. 11 of each branch, rational in sym::v()
   // The load (eq. 6 by docs/mathematics.md fact 7, load_integrand) for beta < alpha: in v-variables and
   // in angle atoms.
   std::vector<MomentTerm> load_v, load_angle;
@@ -50,8 +50,8 @@ struct BeyondBranch {
 // parameter a value; the signs of the angle forms are fixed there at alpha = 3 beta/2.
 // Throws std::invalid_argument where sub_interval.hpp does (a moment whose integrand has
 // more than one pole factor in v^2).
-BeyondBranch derive_beyond_branch(const GiNaC::ex& top_g, const GiNaC::ex& flank_g,
-                                  const GiNaC::ex& beta, const GiNaC::exmap& sample);
+BeyondBranch derive_beyond_branch(const GiNaC::ex& top_g, const GiNaC::ex& flank_g, const GiNaC::ex& beta,
+                                  const GiNaC::exmap& sample);
 
 // `sample` with alpha = 3 beta/2 and no point u in the zone: where the angle forms beyond the
 // branch have their signs fixed.

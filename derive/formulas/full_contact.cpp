@@ -78,7 +78,6 @@ ex in_square(const ex& R) { return R.subs(sym::Cx() == (1 - sym::t()) / (1 + sym
 
 ex in_cosine_of(const ex& e) { return e.subs(sym::t() == (1 - sym::Cx()) / (1 + sym::Cx())).normal(); }
 
-
 // A profile built with abs() (full_contact.hpp): F = t Y'(t) of a branch as N(t)/(a + b t)^L,
 // N a polynomial of degree <= L, its one pole factor kept whole (no coefficient singular where
 // b -> 0, the pole passing through infinity, as the top's of eq. 2 does at m = 1).
@@ -93,8 +92,9 @@ PoleForm pole_form(const ex& F) {
   const ex denominator = GiNaC::factor(fraction.op(1));
   PoleForm form;
   ex constant = 1;
-  for (const ex& factor_power : GiNaC::is_a<GiNaC::mul>(denominator) ? std::vector<ex>(denominator.begin(), denominator.end())
-                                                                       : std::vector<ex>{denominator}) {
+  for (const ex& factor_power : GiNaC::is_a<GiNaC::mul>(denominator)
+                                    ? std::vector<ex>(denominator.begin(), denominator.end())
+                                    : std::vector<ex>{denominator}) {
     const bool power = GiNaC::is_a<GiNaC::power>(factor_power);
     const ex factor = power ? factor_power.op(0) : factor_power;
     if (!factor.has(t)) {
@@ -167,8 +167,13 @@ struct Piece {
     const ex Z = z(f), W = one_plus_z(f);
     const int L = f.L;
     const auto atom = [&](int k) { return edge_moment(k, L, Z, W); };
-    if (top) return beta * GiNaC::pow(f.a, -L) * edge_sum(c, s, [](int j) { return j; }, atom);
-    return GiNaC::pow(beta, 1 - 2 * L) * GiNaC::pow(f.b, -L) * edge_sum(c, s, [L](int j) { return L - 1 - j; }, atom);
+    if (top)
+      return beta * GiNaC::pow(f.a, -L) *
+             edge_sum(
+                 c, s, [](int j) { return j; }, atom);
+    return GiNaC::pow(beta, 1 - 2 * L) * GiNaC::pow(f.b, -L) *
+           edge_sum(
+               c, s, [L](int j) { return L - 1 - j; }, atom);
   }
   // Int_piece du/(t - u^2), t on the piece (principal value): Lambda/(2v) on [0, beta],
   // -Lambda/(2v) beyond, Lambda = log|(v + beta)/(v - beta)|.
@@ -178,19 +183,28 @@ struct Piece {
     return top ? 1 / beta * quadratic_moment(0, 1, -t / beta2, (beta2 - t) / beta2)
                : -beta / t * quadratic_moment(0, 1, -beta2 / t, (t - beta2) / t);
   }
-  // Int_piece c(u^2)/((a + b u^2)^L (t - u^2)) du for the polynomial c in t, t off the piece: the Cauchy factor kept beside the
-  // pole factor (J'_{k,L}; I'_{k,1} of the Cauchy factor alone where L = 0).
+  // Int_piece c(u^2)/((a + b u^2)^L (t - u^2)) du for the polynomial c in t, t off the piece: the Cauchy factor kept
+  // beside the pole factor (J'_{k,L}; I'_{k,1} of the Cauchy factor alone where L = 0).
   ex cauchy_moment(const ex& c, const PoleForm& f) const {
     const GiNaC::symbol& t = sym::t();
     const numeric beta2 = beta * beta;
     const ex y = top ? -beta2 / t : -t / beta2, one_plus_y = top ? (t - beta2) / t : (beta2 - t) / beta2;
     const int L = f.L;
     const auto atom = [&](int k) {
-      return L == 0 ? edge_moment(k, 1, y, one_plus_y) : two_factor_edge_moment(k, L, y, one_plus_y, z(f), one_plus_z(f));
+      return L == 0 ? edge_moment(k, 1, y, one_plus_y)
+                    : two_factor_edge_moment(k, L, y, one_plus_y, z(f), one_plus_z(f));
     };
-    if (top) return beta * GiNaC::pow(f.a, -L) / t * edge_sum(c, t, [](int j) { return j; }, atom);
-    if (L == 0) return -1 / beta * edge_sum(c, t, [](int) { return 0; }, atom);  // c constant
-    return -GiNaC::pow(beta, -1 - 2 * L) * GiNaC::pow(f.b, -L) * edge_sum(c, t, [L](int j) { return L - j; }, atom);
+    if (top)
+      return beta * GiNaC::pow(f.a, -L) / t *
+             edge_sum(
+                 c, t, [](int j) { return j; }, atom);
+    if (L == 0)
+      return -1 / beta *
+             edge_sum(
+                 c, t, [](int) { return 0; }, atom);  // c constant
+    return -GiNaC::pow(beta, -1 - 2 * L) * GiNaC::pow(f.b, -L) *
+           edge_sum(
+               c, t, [L](int j) { return L - j; }, atom);
   }
 };
 
@@ -201,7 +215,9 @@ ex jump_apart(const PoleForm& f, const Piece& piece) {
   const GiNaC::symbol& t = sym::t();
   const GiNaC::symbol s("s");
   const ex F = f.N / GiNaC::pow(f.a + f.b * t, f.L);
-  const ex P = ((F.subs(t == s) - F) / (t - s) * GiNaC::pow(f.a + f.b * s, f.L) * GiNaC::pow(f.a + f.b * t, f.L)).normal().expand();
+  const ex P = ((F.subs(t == s) - F) / (t - s) * GiNaC::pow(f.a + f.b * s, f.L) * GiNaC::pow(f.a + f.b * t, f.L))
+                   .normal()
+                   .expand();
   return piece.moment(P, s, f) / GiNaC::pow(f.a + f.b * t, f.L);
 }
 
@@ -253,7 +269,8 @@ ex in_cosine_by_atom(const ex& bracket) {
   };
   visit(e);
   std::vector<ex> atoms(found.begin(), found.end());
-  std::sort(atoms.begin(), atoms.end(), [](const ex& x, const ex& y) { return canonical_string(x) < canonical_string(y); });
+  std::sort(atoms.begin(), atoms.end(),
+            [](const ex& x, const ex& y) { return canonical_string(x) < canonical_string(y); });
   std::vector<GiNaC::symbol> symbols(atoms.size());
   GiNaC::exmap to_symbols, zero;
   for (std::size_t k = 0; k < atoms.size(); ++k) to_symbols[atoms[k]] = symbols[k], zero[symbols[k]] = 0;
@@ -271,7 +288,10 @@ struct Branches {
 
 Branches branches_of(const ex& R_top, const ex& R_flank, const numeric& cosine) {
   const GiNaC::symbol& t = sym::t();
-  Branches b{branch_tangent(cosine), {}, {}, (t * in_square(R_top).diff(t)).normal(),
+  Branches b{branch_tangent(cosine),
+             {},
+             {},
+             (t * in_square(R_top).diff(t)).normal(),
              (t * in_square(R_flank).diff(t)).normal()};
   const ex at_branch = b.beta * b.beta;
   if (!(in_square(R_top) - in_square(R_flank)).subs(t == at_branch).normal().is_zero() ||
@@ -296,8 +316,8 @@ ex full_contact_pressure(const ex& R) {
   for (const Pole& pole : poles_in(Y, t)) {
     const ex& tau = pole.tau;
     const int l = pole.order;
-    // Res_{t=tau} Y(t) v/(sqrt(-t)(v^2 - t)) = (1/sqrt(-tau)) [h^(l-1)] W(tau + h) v (1 + h/tau)^(-1/2)/(v^2 - tau - h),
-    // W = (t - tau)^l Y.
+    // Res_{t=tau} Y(t) v/(sqrt(-t)(v^2 - t)) = (1/sqrt(-tau)) [h^(l-1)] W(tau + h) v (1 + h/tau)^(-1/2)/(v^2 - tau -
+    // h), W = (t - tau)^l Y.
     const ex W = pole.regular.subs(t == tau + h);
     ex root_series = 0;  // (1 + h/tau)^(-1/2) to order l - 1: binomial(-1/2, n) (h/tau)^n
     numeric binomial = 1;
@@ -313,7 +333,6 @@ ex full_contact_pressure(const ex& R) {
   }
   return sym::E() / 2 * GiNaC::Pi / sym::b1() * in_cosine;
 }
-
 
 ex full_contact_pressure(const ex& R_top, const ex& R_flank, const numeric& cosine) {
   const GiNaC::symbol& t = sym::t();

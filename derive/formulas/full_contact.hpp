@@ -57,7 +57,7 @@ GiNaC::ex full_contact_pressure(const GiNaC::ex& R_top, const GiNaC::ex& R_flank
 // piece's Cauchy factor kept (J_{j,l}): well conditioned where the point meets a pole of the
 // other branch's formula (cos x^ = 1/m of eq. 2's flank for m > 1, on the top side). At the
 // branch point itself its logarithms are infinite.
-GiNaC::ex full_contact_pressure_on_side(const GiNaC::ex& R_top, const GiNaC::ex& R_flank,
-                                        const GiNaC::numeric& cosine, bool top);
+GiNaC::ex full_contact_pressure_on_side(const GiNaC::ex& R_top, const GiNaC::ex& R_flank, const GiNaC::numeric& cosine,
+                                        bool top);
 
 }  // namespace wavecontact::derive

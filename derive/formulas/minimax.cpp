@@ -43,8 +43,7 @@ std::vector<numeric> solve(std::vector<std::vector<numeric>> A, std::vector<nume
 
 // The point of largest |e| in [lo, hi] near a sampled maximum (golden section; |e| is
 // unimodal there).
-std::pair<numeric, numeric> refine_maximum(const std::function<numeric(const numeric&)>& e,
-                                           numeric lo, numeric hi) {
+std::pair<numeric, numeric> refine_maximum(const std::function<numeric(const numeric&)>& e, numeric lo, numeric hi) {
   const numeric ratio = (GiNaC::sqrt(numeric(5)) - 1) / 2;
   numeric x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
   numeric f1 = GiNaC::abs(e(x1)), f2 = GiNaC::abs(e(x2));
@@ -63,9 +62,8 @@ std::pair<numeric, numeric> refine_maximum(const std::function<numeric(const num
 
 // The local extrema of e over [lo, hi], alternating in sign: the largest |e| of each run
 // of one sign among `samples` points, refined, the interval's ends included as sampled.
-std::vector<std::pair<numeric, numeric>> alternating_extrema(
-    const std::function<numeric(const numeric&)>& e, const numeric& lo, const numeric& hi,
-    int samples) {
+std::vector<std::pair<numeric, numeric>> alternating_extrema(const std::function<numeric(const numeric&)>& e,
+                                                             const numeric& lo, const numeric& hi, int samples) {
   std::vector<numeric> u(samples), value(samples);
   for (int i = 0; i < samples; ++i) {
     u[i] = lo + (hi - lo) * i / (samples - 1);
@@ -129,23 +127,20 @@ std::vector<numeric> remez(const Function& f, const numeric& lo, const numeric& 
       }
     }
     if (static_cast<int>(extrema.size()) < points) {
-      throw std::runtime_error("remez: the error does not alternate at degree " +
-                               std::to_string(degree));
+      throw std::runtime_error("remez: the error does not alternate at degree " + std::to_string(degree));
     }
     numeric largest = 0;
     for (int i = 0; i < points; ++i) {
       reference[i] = extrema[i].first;
-      largest = std::max(largest, GiNaC::abs(extrema[i].second),
-                         [](const numeric& x, const numeric& y) { return x < y; });
+      largest =
+          std::max(largest, GiNaC::abs(extrema[i].second), [](const numeric& x, const numeric& y) { return x < y; });
     }
     if ((largest - levelled) / largest < numeric(1, 1000000)) return p;
   }
-  throw std::runtime_error("remez: no levelled error after 60 iterations at degree " +
-                           std::to_string(degree));
+  throw std::runtime_error("remez: no levelled error after 60 iterations at degree " + std::to_string(degree));
 }
 
-numeric max_relative_error(const Function& f, const std::vector<numeric>& p, const numeric& lo,
-                           const numeric& hi) {
+numeric max_relative_error(const Function& f, const std::vector<numeric>& p, const numeric& lo, const numeric& hi) {
   const auto error = [&](const numeric& u) { return horner(p, u) / f(u) - 1; };
   numeric largest = 0;
   for (const auto& [u, e] : alternating_extrema(error, lo, hi, 400 * static_cast<int>(p.size()))) {

@@ -16,8 +16,7 @@ using GiNaC::numeric;
 
 void require_even(int n, const char* function) {
   if (n < 2 || n % 2 != 0) {
-    throw std::invalid_argument(std::string(function) + ": n = " + std::to_string(n) +
-                                " must be an even integer >= 2");
+    throw std::invalid_argument(std::string(function) + ": n = " + std::to_string(n) + " must be an even integer >= 2");
   }
 }
 
@@ -29,8 +28,7 @@ std::vector<numeric> expansion_coefficients(int n) {
   for (int m = 0; m < n; ++m) {
     c[m] = m % 2 == 0 ? binomial : -binomial;
     // C(2n, 2m+3) = C(2n, 2m+1) (2n-2m-1)(2n-2m-2) / ((2m+2)(2m+3))
-    binomial = cln::exquo(binomial * (2 * n - 2 * m - 1) * (2 * n - 2 * m - 2),
-                          cln::cl_I((2 * m + 2) * (2 * m + 3)));
+    binomial = cln::exquo(binomial * (2 * n - 2 * m - 1) * (2 * n - 2 * m - 2), cln::cl_I((2 * m + 2) * (2 * m + 3)));
   }
   // Taylor shift to powers of z = 1 + t: P(t) = sum_i c_i z^i.
   for (int i = 0; i < n - 1; ++i) {
@@ -120,8 +118,7 @@ RadicalSum eq19_term(int j, Radicals& radicals) {
   const ex square = radicals.square(index);
   const ex one_plus_s_power = GiNaC::pow(1 + sym::s(), j);
   if (j % 2 == 0) return RadicalSum::rational(1 / (GiNaC::pow(square, j / 2) * one_plus_s_power));
-  return RadicalSum::monomial(RadicalSum::Mask{1} << index,
-                              1 / (GiNaC::pow(square, (j + 1) / 2) * one_plus_s_power));
+  return RadicalSum::monomial(RadicalSum::Mask{1} << index, 1 / (GiNaC::pow(square, (j + 1) / 2) * one_plus_s_power));
 }
 
 }  // namespace wavecontact::derive

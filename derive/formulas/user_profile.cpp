@@ -25,24 +25,123 @@ namespace {
 const std::regex identifier("[A-Za-z][A-Za-z0-9_]{0,63}");
 
 // Symbols of the derivation and of the emitted code, which a parameter may not shadow.
-const std::set<std::string> reserved{"x", "v", "u", "s", "t", "alpha", "E", "b1", "Ca",
-                                     "Sa", "Cx", "Sx", "D", "Pi", "I", "Scalar"};
+const std::set<std::string> reserved{"x",  "v",  "u",  "s",  "t", "alpha", "E", "b1",
+                                     "Ca", "Sa", "Cx", "Sx", "D", "Pi",    "I", "Scalar"};
 
 // Names a parameter (an argument of the emitted C++) may not take: the language's keywords
 // and alternative tokens, the emitted code's own names (out, A, work, atoms, y, one_plus_y,
 // the functions it calls unqualified, its namespaces) and lower-case macros of the C library.
-const std::set<std::string> cpp_names{
-    "alignas", "alignof", "and", "and_eq", "asm", "auto", "bitand", "bitor", "bool", "break", "case", "catch",
-    "char", "char8_t", "char16_t", "char32_t", "class", "compl", "concept", "const", "consteval", "constexpr",
-    "constinit", "const_cast", "continue", "co_await", "co_return", "co_yield", "decltype", "default", "delete",
-    "do", "double", "dynamic_cast", "else", "enum", "explicit", "export", "extern", "false", "float", "for",
-    "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new", "noexcept", "not", "not_eq",
-    "nullptr", "operator", "or", "or_eq", "private", "protected", "public", "register", "reinterpret_cast",
-    "requires", "return", "short", "signed", "sizeof", "static", "static_assert", "static_cast", "struct",
-    "switch", "template", "this", "thread_local", "throw", "true", "try", "typedef", "typeid", "typename",
-    "union", "unsigned", "using", "virtual", "void", "volatile", "wchar_t", "while", "xor", "xor_eq",
-    "out", "A", "work", "atoms", "y", "one_plus_y", "sqrt", "fabs", "fma", "std", "wavecontact", "generated",
-    "errno", "assert", "stdin", "stdout", "stderr", "offsetof", "main"};
+const std::set<std::string> cpp_names{"alignas",
+                                      "alignof",
+                                      "and",
+                                      "and_eq",
+                                      "asm",
+                                      "auto",
+                                      "bitand",
+                                      "bitor",
+                                      "bool",
+                                      "break",
+                                      "case",
+                                      "catch",
+                                      "char",
+                                      "char8_t",
+                                      "char16_t",
+                                      "char32_t",
+                                      "class",
+                                      "compl",
+                                      "concept",
+                                      "const",
+                                      "consteval",
+                                      "constexpr",
+                                      "constinit",
+                                      "const_cast",
+                                      "continue",
+                                      "co_await",
+                                      "co_return",
+                                      "co_yield",
+                                      "decltype",
+                                      "default",
+                                      "delete",
+                                      "do",
+                                      "double",
+                                      "dynamic_cast",
+                                      "else",
+                                      "enum",
+                                      "explicit",
+                                      "export",
+                                      "extern",
+                                      "false",
+                                      "float",
+                                      "for",
+                                      "friend",
+                                      "goto",
+                                      "if",
+                                      "inline",
+                                      "int",
+                                      "long",
+                                      "mutable",
+                                      "namespace",
+                                      "new",
+                                      "noexcept",
+                                      "not",
+                                      "not_eq",
+                                      "nullptr",
+                                      "operator",
+                                      "or",
+                                      "or_eq",
+                                      "private",
+                                      "protected",
+                                      "public",
+                                      "register",
+                                      "reinterpret_cast",
+                                      "requires",
+                                      "return",
+                                      "short",
+                                      "signed",
+                                      "sizeof",
+                                      "static",
+                                      "static_assert",
+                                      "static_cast",
+                                      "struct",
+                                      "switch",
+                                      "template",
+                                      "this",
+                                      "thread_local",
+                                      "throw",
+                                      "true",
+                                      "try",
+                                      "typedef",
+                                      "typeid",
+                                      "typename",
+                                      "union",
+                                      "unsigned",
+                                      "using",
+                                      "virtual",
+                                      "void",
+                                      "volatile",
+                                      "wchar_t",
+                                      "while",
+                                      "xor",
+                                      "xor_eq",
+                                      "out",
+                                      "A",
+                                      "work",
+                                      "atoms",
+                                      "y",
+                                      "one_plus_y",
+                                      "sqrt",
+                                      "fabs",
+                                      "fma",
+                                      "std",
+                                      "wavecontact",
+                                      "generated",
+                                      "errno",
+                                      "assert",
+                                      "stdin",
+                                      "stdout",
+                                      "stderr",
+                                      "offsetof",
+                                      "main"};
 
 // All capitals (NULL, EOF, INFINITY, M_PI, ...): left to macros.
 bool macro_like(const std::string& name) {
@@ -59,7 +158,8 @@ bool macro_like(const std::string& name) {
 
 [[noreturn]] void refuse(const ProfileSpec& spec, const std::string& why) {
   const std::string& text = spec.expression;  // echoed up to 200 characters
-  const std::string shown = text.size() <= 200 ? text : text.substr(0, 200) + "... (" + std::to_string(text.size()) + " characters)";
+  const std::string shown =
+      text.size() <= 200 ? text : text.substr(0, 200) + "... (" + std::to_string(text.size()) + " characters)";
   throw InputRefused("profile " + spec.name + " = \"" + shown + "\": " + why);
 }
 
@@ -80,8 +180,9 @@ bool find_non_integer_power(const ex& e, ex& found) {
 
 void check_names(const ProfileSpec& spec) {
   if (!std::regex_match(spec.name, identifier)) {
-    refuse(spec, "the name must be a C++ identifier: a letter, then letters, digits or _ "
-                 "(at most 64 characters)");
+    refuse(spec,
+           "the name must be a C++ identifier: a letter, then letters, digits or _ "
+           "(at most 64 characters)");
   }
   if (spec.parameters.size() > expression_limits::max_parameters) {
     refuse(spec, std::to_string(spec.parameters.size()) + " parameters, more than " +
@@ -90,19 +191,22 @@ void check_names(const ProfileSpec& spec) {
   std::set<std::string> seen;
   for (const auto& p : spec.parameters) {
     if (!std::regex_match(p.name, identifier)) {
-      refuse(spec, "parameter \"" + p.name + "\" is not an identifier (a letter, then "
-                   "letters, digits or _)");
+      refuse(spec, "parameter \"" + p.name +
+                       "\" is not an identifier (a letter, then "
+                       "letters, digits or _)");
     }
     if (reserved.count(p.name)) {
-      refuse(spec, "parameter \"" + p.name + "\" is reserved (x is the coordinate; E, b1 and "
-                   "the angle atoms Ca Sa Cx Sx D are arguments of the emitted evaluators)");
+      refuse(spec, "parameter \"" + p.name +
+                       "\" is reserved (x is the coordinate; E, b1 and "
+                       "the angle atoms Ca Sa Cx Sx D are arguments of the emitted evaluators)");
     }
     if (cpp_names.count(p.name)) {
       refuse(spec, "parameter \"" + p.name + "\" is a C++ keyword or a name of the emitted code; rename it");
     }
     if (macro_like(p.name)) {
-      refuse(spec, "parameter \"" + p.name + "\" is all capitals, which C and C++ leave to macros (NULL, "
-                   "EOF, INFINITY); rename it");
+      refuse(spec, "parameter \"" + p.name +
+                       "\" is all capitals, which C and C++ leave to macros (NULL, "
+                       "EOF, INFINITY); rename it");
     }
     if (!seen.insert(p.name).second) refuse(spec, "parameter \"" + p.name + "\" is given twice");
   }
@@ -128,8 +232,7 @@ void check_whole_order(const ProfileSpec& spec, const ex& Y) {
 // A parameter-free pole of the profile at cos x = c0 in [lo, hi], the part of [-1, 1] where
 // the branch R holds (refused before the engine meets it: at x = 0 it is a pole at v^2 = 0,
 // where the moments divide by zero).
-void check_poles_off_the_period(const ProfileSpec& spec, const ex& R, const numeric& lo = -1,
-                                const numeric& hi = 1) {
+void check_poles_off_the_period(const ProfileSpec& spec, const ex& R, const numeric& lo = -1, const numeric& hi = 1) {
   const GiNaC::symbol& c = sym::Cx();
   const ex denominator = GiNaC::factor(R.normal().denom());
   const std::vector<ex> factors = GiNaC::is_a<GiNaC::mul>(denominator)
@@ -246,8 +349,9 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
   const ex& y = d.branches.top;
   ex power;
   if (find_non_integer_power(y, power)) {
-    refuse(spec, printed(power) + " is a non-integer power: the profile must be rational in "
-                 "cos(k x) and sin(k x) (integer k) and in the parameters");
+    refuse(spec, printed(power) +
+                     " is a non-integer power: the profile must be rational in "
+                     "cos(k x) and sin(k x) (integer k) and in the parameters");
   }
   ex y_v;
   try {
@@ -256,8 +360,9 @@ ProfileDerivation derive_profile(const ProfileSpec& spec) {
     refuse(spec, e.what());
   }
   if (!(y_v.subs(sym::v() == -sym::v()) - y_v).normal().is_zero()) {
-    refuse(spec, "it is not even in x (y(-x) != y(x)); the contact zone |x| < a is centred "
-                 "on x = 0, a top of the profile");
+    refuse(spec,
+           "it is not even in x (y(-x) != y(x)); the contact zone |x| < a is centred "
+           "on x = 0, a top of the profile");
   }
   try {
     if (d.branches.branched) check_slopes_meet(spec, d.branches);

@@ -22,8 +22,8 @@
 namespace wavecontact::derive {
 
 struct ProfileParameter {
-  std::string name;        // a C++ identifier, not one of the reserved symbols
-  GiNaC::numeric sample;   // a typical value (rational), fixes the signs of square roots
+  std::string name;       // a C++ identifier, not one of the reserved symbols
+  GiNaC::numeric sample;  // a typical value (rational), fixes the signs of square roots
 };
 
 struct ProfileSpec {

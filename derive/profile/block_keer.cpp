@@ -30,8 +30,7 @@ long multiple_of_x(const ex& argument, const ex& original) {
   const ex k = (argument / sym::x()).normal();
   if (!GiNaC::is_a<numeric>(k) || !GiNaC::ex_to<numeric>(k).is_integer()) {
     std::ostringstream os;
-    os << "profile is not rational in cos(k x), sin(k x) with integer k: " << argument
-       << " in " << original;
+    os << "profile is not rational in cos(k x), sin(k x) with integer k: " << argument << " in " << original;
     throw std::invalid_argument(os.str());
   }
   return GiNaC::ex_to<numeric>(k).to_long();
@@ -46,8 +45,7 @@ struct HalfAngleSubstitution : GiNaC::map_function {
       if (name == "cos") return cos_multiple(multiple_of_x(e.op(0), original), sym::v());
       if (name == "sin") return sin_multiple(multiple_of_x(e.op(0), original), sym::v());
       std::ostringstream os;
-      os << "profile contains " << e << ", which is not rational in cos(k x) and sin(k x): "
-         << original;
+      os << "profile contains " << e << ", which is not rational in cos(k x) and sin(k x): " << original;
       throw std::invalid_argument(os.str());
     }
     return e.map(*this);
@@ -56,8 +54,7 @@ struct HalfAngleSubstitution : GiNaC::map_function {
 
 // cos(k x^) -> T_k(c), sin(k x^) -> sin(x^) U_(k-1)(c), with sin x^ a symbol.
 struct CosineSubstitution : GiNaC::map_function {
-  CosineSubstitution(const ex& original, ex c, ex sine)
-      : original(original), c(std::move(c)), sine(std::move(sine)) {}
+  CosineSubstitution(const ex& original, ex c, ex sine) : original(original), c(std::move(c)), sine(std::move(sine)) {}
   const ex& original;
   const ex c, sine;
   // T_k (first) or U_k (second kind) by the three-term recurrence.
@@ -78,8 +75,7 @@ struct CosineSubstitution : GiNaC::map_function {
       if (name == "cos") return chebyshev(std::labs(k), false);
       if (name == "sin") return k == 0 ? ex(0) : (k < 0 ? -1 : 1) * sine * chebyshev(std::labs(k) - 1, true);
       std::ostringstream os;
-      os << "profile contains " << e << ", which is not rational in cos(k x) and sin(k x): "
-         << original;
+      os << "profile contains " << e << ", which is not rational in cos(k x) and sin(k x): " << original;
       throw std::invalid_argument(os.str());
     }
     return e.map(*this);
@@ -105,8 +101,7 @@ ex in_half_angle_tangent(const ex& y) {
   HalfAngleSubstitution substitute(y);
   const ex result = substitute(y);
   const ex nd = result.normal().numer_denom();
-  if (result.has(sym::x()) || !nd.op(0).is_polynomial(sym::v()) ||
-      !nd.op(1).is_polynomial(sym::v())) {
+  if (result.has(sym::x()) || !nd.op(0).is_polynomial(sym::v()) || !nd.op(1).is_polynomial(sym::v())) {
     std::ostringstream os;
     os << "profile is not a rational function of cos(k x), sin(k x): " << y;
     throw std::invalid_argument(os.str());
@@ -151,8 +146,6 @@ ex in_cosine(const ex& y) {
   return GiNaC::collect_common_factors(Y.op(0)) / GiNaC::collect_common_factors(Y.op(1));
 }
 
-ex hilbert_rhs(const ex& y) {
-  return (-sym::E() / 2 * in_half_angle_tangent(y.diff(sym::x()))).normal();
-}
+ex hilbert_rhs(const ex& y) { return (-sym::E() / 2 * in_half_angle_tangent(y.diff(sym::x()))).normal(); }
 
 }  // namespace wavecontact::derive

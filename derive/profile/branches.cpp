@@ -17,9 +17,7 @@ using GiNaC::numeric;
 
 namespace {
 
-[[noreturn]] void refuse(const ex& call, const std::string& why) {
-  throw InputRefused(printed(call) + ": " + why);
-}
+[[noreturn]] void refuse(const ex& call, const std::string& why) { throw InputRefused(printed(call) + ": " + why); }
 
 std::vector<ex> abs_calls(const ex& y) {
   std::vector<ex> calls;
@@ -112,8 +110,7 @@ BranchSplit split_branches(const ex& y) {
     try {
       f = in_cosine(argument);
     } catch (const std::invalid_argument& e) {
-      refuse(call, std::string("the argument of abs() must be even in x and rational in cos(k x) (") +
-                       e.what() + ")");
+      refuse(call, std::string("the argument of abs() must be even in x and rational in cos(k x) (") + e.what() + ")");
     }
     Call c{call, f, sign_changes(call, f)};
     changes.insert(c.changes.begin(), c.changes.end());
@@ -142,8 +139,9 @@ BranchSplit split_branches(const ex& y) {
     split.cosine = change;
     split.beta = GiNaC::sqrt((1 - change) / (1 + change));
     if (!GiNaC::is_a<numeric>(split.beta) || !GiNaC::ex_to<numeric>(split.beta).is_rational()) {
-      throw InputRefused("the arguments of abs() change sign at cos x = " + printed(change) + ", where tan(x/2) = " +
-                         printed(split.beta) + " is irrational; the engine needs a rational tan(x/2) = r there, "
+      throw InputRefused("the arguments of abs() change sign at cos x = " + printed(change) +
+                         ", where tan(x/2) = " + printed(split.beta) +
+                         " is irrational; the engine needs a rational tan(x/2) = r there, "
                          "cos x = (1 - r^2)/(1 + r^2) (0, 3/5, -3/5, 12/13, ...)");
     }
   }

@@ -46,8 +46,7 @@ class Lexer {
         last_product_ = 1;
       } else if (c == '(') {
         if (groups_.size() >= static_cast<std::size_t>(limits::max_nesting)) {
-          refuse("parentheses nest deeper than " + std::to_string(limits::max_nesting) +
-                 position(i));
+          refuse("parentheses nest deeper than " + std::to_string(limits::max_nesting) + position(i));
         }
         std::size_t next = i + 1;
         while (next < text_.size() && is_blank(text_[next])) ++next;
@@ -75,13 +74,11 @@ class Lexer {
         char code[8];
         std::snprintf(code, sizeof code, "\\x%02x", static_cast<unsigned>(static_cast<unsigned char>(c)));
         os << "character '" << (std::isprint(static_cast<unsigned char>(c)) ? std::string(1, c) : std::string(code))
-           << "'" << position(i)
-           << " is not allowed (letters, digits, _, blanks and + - * / ^ ( ) .)";
+           << "'" << position(i) << " is not allowed (letters, digits, _, blanks and + - * / ^ ( ) .)";
         refuse(os.str());
       }
     }
-    if (!groups_.empty()) refuse("unbalanced \"(\": " + std::to_string(groups_.size()) +
-                                 " not closed");
+    if (!groups_.empty()) refuse("unbalanced \"(\": " + std::to_string(groups_.size()) + " not closed");
     return out_;
   }
 
@@ -97,8 +94,8 @@ class Lexer {
         std::find(functions_.begin(), functions_.end(), name) == functions_.end()) {
       std::string allowed;
       for (const auto& f : functions_) allowed += (allowed.empty() ? "" : ", ") + f;
-      refuse("function " + name + position(start) +
-             " is not rational in cos(k x) and sin(k x); the functions are " + allowed);
+      refuse("function " + name + position(start) + " is not rational in cos(k x) and sin(k x); the functions are " +
+             allowed);
     }
     out_ += name;
     last_product_ = 1;
@@ -130,15 +127,13 @@ class Lexer {
       while (i < text_.size() && is_digit(text_[i])) digits += text_[i++];
       if (digits.empty()) refuse("the number" + position(start) + " has an empty exponent");
       if (digits.size() > 3 || std::stol(digits) > limits::max_decimal_exponent) {
-        refuse("the number " + text_.substr(start, i - start) + position(start) +
-               " has a decimal exponent beyond +-" +
+        refuse("the number " + text_.substr(start, i - start) + position(start) + " has a decimal exponent beyond +-" +
                std::to_string(limits::max_decimal_exponent));
       }
       decimal_exponent = sign * std::stol(digits);
     }
     const auto first_significant = mantissa.find_first_not_of('0');
-    const std::size_t significant =
-        first_significant == std::string::npos ? 0 : mantissa.size() - first_significant;
+    const std::size_t significant = first_significant == std::string::npos ? 0 : mantissa.size() - first_significant;
     if (significant > static_cast<std::size_t>(limits::max_digits) ||
         mantissa.size() > static_cast<std::size_t>(2 * limits::max_digits)) {
       refuse("the number " + text_.substr(start, i - start) + position(start) + " has more than " +
@@ -155,8 +150,7 @@ class Lexer {
     const long shift = decimal_exponent - fraction_digits;  // value = mantissa * 10^shift
     const std::string digits = significant ? mantissa.substr(first_significant) : "0";
     const std::string power_of_ten = "1" + std::string(static_cast<std::size_t>(std::labs(shift)), '0');
-    out_ += shift >= 0 ? "(" + digits + "*" + power_of_ten + ")"
-                       : "(" + digits + "/" + power_of_ten + ")";
+    out_ += shift >= 0 ? "(" + digits + "*" + power_of_ten + ")" : "(" + digits + "/" + power_of_ten + ")";
     return i;
   }
 
@@ -164,7 +158,9 @@ class Lexer {
   // and GiNaC evaluates a number's power at once, so the product is bounded too.
   std::size_t exponent(std::size_t i) {
     const std::size_t start = i++;
-    auto skip_blanks = [&] { while (i < text_.size() && is_blank(text_[i])) ++i; };
+    auto skip_blanks = [&] {
+      while (i < text_.size() && is_blank(text_[i])) ++i;
+    };
     skip_blanks();
     const bool parenthesised = i < text_.size() && text_[i] == '(';
     if (parenthesised) ++i;
@@ -176,11 +172,11 @@ class Lexer {
     while (i < text_.size() && is_digit(text_[i])) digits += text_[i++];
     skip_blanks();
     const bool closed = !parenthesised || (i < text_.size() && text_[i] == ')');
-    const bool integer = !digits.empty() && closed &&
-                         !(i < text_.size() && (text_[i] == '.' || is_letter(text_[i])));
+    const bool integer = !digits.empty() && closed && !(i < text_.size() && (text_[i] == '.' || is_letter(text_[i])));
     if (!integer) {
-      refuse("the exponent after ^" + position(start) + " must be an integer literal (|n| <= " +
-             std::to_string(limits::max_power) + "); the profile is rational in cos(k x), "
+      refuse("the exponent after ^" + position(start) +
+             " must be an integer literal (|n| <= " + std::to_string(limits::max_power) +
+             "); the profile is rational in cos(k x), "
              "sin(k x)");
     }
     if (parenthesised) ++i;
@@ -188,9 +184,8 @@ class Lexer {
     const long product = last_product_ * std::max(n, 1L);
     if (n > limits::max_power || product > limits::max_power) {
       refuse("the power ^" + std::string(negative ? "-" : "") + digits + position(start) +
-             (n > limits::max_power ? std::string(" is beyond ")
-                                    : " of a power gives an exponent beyond ") +
-             "+-" + std::to_string(limits::max_power));
+             (n > limits::max_power ? std::string(" is beyond ") : " of a power gives an exponent beyond ") + "+-" +
+             std::to_string(limits::max_power));
     }
     last_product_ = product;
     raise(product);
@@ -238,8 +233,7 @@ struct Degrees {
 
 void check_coefficient(const numeric& q) {
   if (!q.is_rational()) refuse("the coefficient " + printed(q) + " is not a rational number");
-  if (q.numer().int_length() > limits::max_number_bits ||
-      q.denom().int_length() > limits::max_number_bits) {
+  if (q.numer().int_length() > limits::max_number_bits || q.denom().int_length() > limits::max_number_bits) {
     refuse("a coefficient has more than " + std::to_string(limits::max_number_bits) +
            " bits in its numerator or denominator");
   }
@@ -254,8 +248,10 @@ Degrees degrees(const ex& e, const ex& x) {
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const ex k = (e.op(0) / x).normal();
     if (!GiNaC::is_a<numeric>(k) || !GiNaC::ex_to<numeric>(k).is_integer()) {
-      refuse("the argument of " + printed(e) + " is not an integer multiple k x of x (a frequency "
-             "k that is an integer, |k| <= " + std::to_string(limits::max_order) + ")");
+      refuse("the argument of " + printed(e) +
+             " is not an integer multiple k x of x (a frequency "
+             "k that is an integer, |k| <= " +
+             std::to_string(limits::max_order) + ")");
     }
     const numeric frequency = GiNaC::abs(GiNaC::ex_to<numeric>(k));
     if (frequency > limits::max_order) {
@@ -269,9 +265,8 @@ Degrees degrees(const ex& e, const ex& x) {
     Degrees d;
     for (const auto& t : terms) d.denominator = add(d.denominator, t.denominator);
     for (const auto& t : terms) {
-      d.numerator = GiNaC::is_a<GiNaC::mul>(e)
-                        ? add(d.numerator, t.numerator)
-                        : std::max(d.numerator, add(t.numerator, d.denominator - t.denominator));
+      d.numerator = GiNaC::is_a<GiNaC::mul>(e) ? add(d.numerator, t.numerator)
+                                               : std::max(d.numerator, add(t.numerator, d.denominator - t.denominator));
     }
     return d;
   }
@@ -298,8 +293,7 @@ ex parse_bounded_expression(const std::string& text, const GiNaC::symtab& table)
     return reader(rewritten);
   } catch (const std::exception& e) {
     const std::string what = e.what();
-    refuse("cannot parse it (" + what.substr(0, what.find('\n')) +
-           "); the symbols are x and the --param names");
+    refuse("cannot parse it (" + what.substr(0, what.find('\n')) + "); the symbols are x and the --param names");
   }
 }
 
@@ -322,14 +316,17 @@ numeric parse_bounded_number(const std::string& text) {
 ProfileOrder checked_order(const ex& y, const ex& x) {
   const Degrees d = degrees(y, x);
   if (d.numerator > limits::max_order) {
-    refuse("its order (the degree in cos x, sin x of the numerator, cos(k x) counting k) may "
-           "reach " + std::to_string(d.numerator) + ", beyond " + std::to_string(limits::max_order));
+    refuse(
+        "its order (the degree in cos x, sin x of the numerator, cos(k x) counting k) may "
+        "reach " +
+        std::to_string(d.numerator) + ", beyond " + std::to_string(limits::max_order));
   }
   if (d.denominator > limits::max_denominator_order) {
-    refuse("the order of its denominator (the degree in cos x, sin x, cos(k x) counting k) may "
-           "reach " + std::to_string(d.denominator) + ", beyond " +
-           std::to_string(limits::max_denominator_order) +
-           ": what is not a cosine sum goes through partial fractions");
+    refuse(
+        "the order of its denominator (the degree in cos x, sin x, cos(k x) counting k) may "
+        "reach " +
+        std::to_string(d.denominator) + ", beyond " + std::to_string(limits::max_denominator_order) +
+        ": what is not a cosine sum goes through partial fractions");
   }
   return {d.numerator, d.denominator};
 }

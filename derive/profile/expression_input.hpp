@@ -29,8 +29,8 @@ inline constexpr int max_power = 256;                // |n| of ^n, an integer li
 // costs little whatever its order (derive/profile/harmonic_part.hpp); the rest goes through the
 // engine's partial fractions, whose cost grows steeply with the order of the denominator
 // (docs/performance.md, derivation times).
-inline constexpr long max_order = 256;              // of the numerator; |k| of cos(k x)
-inline constexpr long max_denominator_order = 32;   // of the denominator
+inline constexpr long max_order = 256;             // of the numerator; |k| of cos(k x)
+inline constexpr long max_denominator_order = 32;  // of the denominator
 // Of a profile kept whole (its denominator's leading coefficient in cos x depends on a
 // parameter, so it has no separate cosine sum): numerator and denominator. Its pole at
 // v^2 = -1 then carries the parameters, and order 16 takes seconds (docs/performance.md).
@@ -40,11 +40,10 @@ inline constexpr long max_number_bits = 256;  // numerator and denominator of a 
 }  // namespace expression_limits
 
 // Parses a profile y(x) over the symbols in `table` (x and the parameters), with the
-// functions cos, sin and abs only (abs() as branches.hpp allows it). Refuses an empty or blank text, a text beyond the limits,
-// a character other than letters, digits, _, blanks and + - * / ^ ( ) . (every function
-// takes one argument), empty parentheses, an exponent
-// that is not an integer literal within max_power, or a parse error. Decimal literals are
-// read exactly (0.1 is 1/10).
+// functions cos, sin and abs only (abs() as branches.hpp allows it). Refuses an empty or blank text, a text beyond the
+// limits, a character other than letters, digits, _, blanks and + - * / ^ ( ) . (every function takes one argument),
+// empty parentheses, an exponent that is not an integer literal within max_power, or a parse error. Decimal literals
+// are read exactly (0.1 is 1/10).
 GiNaC::ex parse_bounded_expression(const std::string& text, const GiNaC::symtab& table);
 
 // Whether e is a call of abs().

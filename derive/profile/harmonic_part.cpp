@@ -41,8 +41,7 @@ HarmonicSplit split_harmonic_part(const ex& Y) {
   if (denominator.degree(c) == 0) return {chebyshev_t_coefficients(numerator / denominator, c), 0};
   const ex quotient = GiNaC::quo(numerator, denominator, c);
   if (quotient.degree(c) < 1) return {{}, Y};
-  return {chebyshev_t_coefficients(quotient, c),
-          (GiNaC::rem(numerator, denominator, c) / denominator).normal()};
+  return {chebyshev_t_coefficients(quotient, c), (GiNaC::rem(numerator, denominator, c) / denominator).normal()};
 }
 
 ex legendre_polynomial(int k, const ex& y) {

@@ -11,7 +11,10 @@ void bind_contact(py::module_& m) {
   using namespace py::literals;
   py::register_exception<BeyondReach>(m, "BeyondReach", PyExc_RuntimeError);
   py::class_<Harmonic>(m, "Harmonic", "A roughness harmonic H cos(n pi x/b1), n >= 1.")
-      .def(py::init([](double H, int n) { return Harmonic{H, n}; }), "H"_a, "n"_a)
+      .def(py::init([](double H, int n) {
+             return Harmonic{H, n};
+           }),
+           "H"_a, "n"_a)
       .def_readonly("H", &Harmonic::H)
       .def_readonly("n", &Harmonic::n);
 
@@ -29,8 +32,7 @@ void bind_contact(py::module_& m) {
           },
           "x"_a, "y(x) [length] (a float or an array).");
 
-  py::class_<ContactZone>(m, "ContactZone",
-                          "One zone of the period [-b1, b1); one around the valley ends past b1.")
+  py::class_<ContactZone>(m, "ContactZone", "One zone of the period [-b1, b1); one around the valley ends past b1.")
       .def_readonly("x_start", &ContactZone::x_start)
       .def_readonly("x_end", &ContactZone::x_end)
       .def_readonly("load", &ContactZone::load, "the load it carries")
@@ -74,7 +76,8 @@ void bind_contact(py::module_& m) {
 
   m.def(
       "solve_contact",
-      [](const Surface& surface, const py::handle& P, double tolerance, int nodes_per_zone, double max_seconds) -> py::object {
+      [](const Surface& surface, const py::handle& P, double tolerance, int nodes_per_zone,
+         double max_seconds) -> py::object {
         // Ctrl-C reaches the solve at its next safe point (about every tenth of a second):
         // the checkpoint takes the GIL, and a pending KeyboardInterrupt abandons the solve.
         SolverOptions options{tolerance, nodes_per_zone, max_seconds};
@@ -104,7 +107,8 @@ void bind_contact(py::module_& m) {
       "surface"_a, "P"_a, "tolerance"_a = 1e-10, "nodes_per_zone"_a = 0, "max_seconds"_a = 60.0,
       "The contact carrying the load P > 0 per period: a Contact for a float, a list of them for "
       "a sequence or array of loads (one continuation through them). tolerance: the relative error "
-      "estimate to meet; nodes_per_zone > 0 fixes the Chebyshev nodes of every zone; max_seconds: the work budget of each load, "
+      "estimate to meet; nodes_per_zone > 0 fixes the Chebyshev nodes of every zone; max_seconds: the work budget of "
+      "each load, "
       "beyond which BeyondReach is raised. Ctrl-C interrupts it within a second.");
   m.def("full_contact_load", &full_contact_load, "surface"_a, "The load from which the contact is full.");
 

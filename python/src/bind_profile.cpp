@@ -34,8 +34,7 @@ void bind_profile(py::module_& m) {
       .def_property_readonly("parameters", [](const Profile& p) { return p.params().parameters; })
       .def_property_readonly("b1", [](const Profile& p) { return p.params().b1; })
       .def_property_readonly("E", [](const Profile& p) { return p.params().E; })
-      .def_property_readonly("reach", &Profile::reach,
-                             "the largest half-width: b1, or the first pole of the profile")
+      .def_property_readonly("reach", &Profile::reach, "the largest half-width: b1, or the first pole of the profile")
       .def(
           "pressure",
           [](const Profile& p, double a, const py::handle& x) {
@@ -50,8 +49,8 @@ void bind_profile(py::module_& m) {
 
   m.def("admissibility", py::overload_cast<const Profile&, double>(&admissibility), "profile"_a, "a"_a,
         "Whether the single zone of half-width a of a user profile is the contact.");
-  m.def("contact_half_width", py::overload_cast<const Profile&, double>(&contact_half_width), "profile"_a,
-        "P"_a, "The one half-width of a user profile carrying P.");
+  m.def("contact_half_width", py::overload_cast<const Profile&, double>(&contact_half_width), "profile"_a, "P"_a,
+        "The one half-width of a user profile carrying P.");
 
   py::class_<PressureUniformity>(m, "PressureUniformity", "How uniform the pressure of one shape is.")
       .def_readonly("m", &PressureUniformity::m, "shape parameter")

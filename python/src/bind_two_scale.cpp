@@ -19,7 +19,9 @@ void bind_two_scale(py::module_& m) {
       .def_readonly("H2", &RoughnessParams::H2, "height of the roughness [length]")
       .def_readonly("n", &RoughnessParams::n, "wavelength ratio b1/b2");
   py::class_<TwoScaleParams>(m, "TwoScaleParams", "The two-scale profile of eq. 1: waviness plus roughness.")
-      .def(py::init([](const WavinessParams& w, const RoughnessParams& r) { return TwoScaleParams{w, r}; }),
+      .def(py::init([](const WavinessParams& w, const RoughnessParams& r) {
+             return TwoScaleParams{w, r};
+           }),
            "waviness"_a, "roughness"_a)
       .def_readonly("waviness", &TwoScaleParams::waviness)
       .def_readonly("roughness", &TwoScaleParams::roughness);

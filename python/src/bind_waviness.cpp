@@ -13,8 +13,8 @@ namespace wavecontact::python {
 namespace {
 
 std::string repr(const WavinessParams& p) {
-  return "WavinessParams(H1=" + std::string(py::repr(py::float_(p.H1))) + ", b1=" +
-         std::string(py::repr(py::float_(p.b1))) + ", m=" + std::string(py::repr(py::float_(p.m))) +
+  return "WavinessParams(H1=" + std::string(py::repr(py::float_(p.H1))) +
+         ", b1=" + std::string(py::repr(py::float_(p.b1))) + ", m=" + std::string(py::repr(py::float_(p.m))) +
          ", E=" + std::string(py::repr(py::float_(p.E))) + ")";
 }
 
@@ -92,8 +92,7 @@ void bind_waviness(py::module_& m) {
       },
       "params"_a, "x"_a, "The profile w(x, m) of eq. 2 at x (a float or an array).");
 
-  py::class_<Admissibility>(m, "Admissibility",
-                            "Whether one zone is the contact: p >= 0 in it and gap >= 0 off it.")
+  py::class_<Admissibility>(m, "Admissibility", "Whether one zone is the contact: p >= 0 in it and gap >= 0 off it.")
       .def_readonly("admissible", &Admissibility::admissible, "p >= 0 in the zone and gap >= 0 off it")
       .def_readonly("most_negative_x", &Admissibility::most_negative_x, "where p is lowest (0 if p >= 0)")
       .def_readonly("most_negative_pressure", &Admissibility::most_negative_pressure, "that p if < 0, else 0")
@@ -110,8 +109,8 @@ void bind_waviness(py::module_& m) {
       .def_readonly("stable", &Equilibrium::stable, "dP/da > 0")
       .def_readonly("admissible", &Equilibrium::admissible, "p >= 0 in the zone and gap >= 0 off it")
       .def("__repr__", [](const Equilibrium& e) {
-        return "Equilibrium(a=" + std::string(py::repr(py::float_(e.a))) + ", stable=" +
-               (e.stable ? "True" : "False") + ", admissible=" + (e.admissible ? "True" : "False") + ")";
+        return "Equilibrium(a=" + std::string(py::repr(py::float_(e.a))) + ", stable=" + (e.stable ? "True" : "False") +
+               ", admissible=" + (e.admissible ? "True" : "False") + ")";
       });
   py::class_<LoadCurve>(m, "LoadCurve",
                         "The single-zone load P(a) over 0 < a <= b1 with its turning points, located "
@@ -124,11 +123,10 @@ void bind_waviness(py::module_& m) {
       .def("equilibria", &LoadCurve::equilibria, "P"_a,
            "Every half-width carrying P, in increasing order, with stability and admissibility.");
 
-  m.def("contact_half_width", py::overload_cast<const WavinessParams&, double>(&contact_half_width),
-        "params"_a, "P"_a,
+  m.def("contact_half_width", py::overload_cast<const WavinessParams&, double>(&contact_half_width), "params"_a, "P"_a,
         "The one half-width carrying P; ValueError if several do (use LoadCurve.equilibria) or none.");
-  m.def("contact_half_width_for_pa_over_pstar", &contact_half_width_for_pa_over_pstar, "params"_a,
-        "pa_over_pstar"_a, "contact_half_width for the load pa/p* = P/(pi E* H1).");
+  m.def("contact_half_width_for_pa_over_pstar", &contact_half_width_for_pa_over_pstar, "params"_a, "pa_over_pstar"_a,
+        "contact_half_width for the load pa/p* = P/(pi E* H1).");
 }
 
 }  // namespace wavecontact::python

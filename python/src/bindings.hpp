@@ -21,8 +21,7 @@ void bind_contact(py::module_& m);
 // copy), otherwise converted once. Whatever is not real numbers (None, strings, complex
 // numbers, whose imaginary part a cast would drop) is a ValueError naming the function and
 // the parameter; non-finite values are the runtime's to refuse.
-inline py::array_t<double, py::array::c_style> as_points(const py::handle& x, const char* function,
-                                                         const char* name) {
+inline py::array_t<double, py::array::c_style> as_points(const py::handle& x, const char* function, const char* name) {
   auto refuse = [&](const std::string& what) {
     return py::value_error(std::string(function) + ": " + name + " must be a number or an array of numbers, not " +
                            what);
@@ -46,8 +45,8 @@ inline double as_double(const py::handle& x, const char* function, const char* n
     const double value = PyLong_AsDouble(x.ptr());
     if (value == -1.0 && PyErr_Occurred()) {
       PyErr_Clear();
-      throw py::value_error(std::string(function) + ": " + name + " = " + std::string(py::str(py::repr(x))).substr(0, 40) +
-                            "... is beyond the range of a double");
+      throw py::value_error(std::string(function) + ": " + name + " = " +
+                            std::string(py::str(py::repr(x))).substr(0, 40) + "... is beyond the range of a double");
     }
     return value;
   }
@@ -68,8 +67,7 @@ Enum checked_enum(int value) {
 // An evaluator of one point applied to a number (a float back), or to an array of any shape
 // (an array of that shape back: one allocation). kernel(x, p) fills p from x without the GIL.
 template <class Scalar, class Kernel>
-py::object scalar_or_array(const py::handle& x, const char* function, const char* name, Scalar scalar,
-                           Kernel kernel) {
+py::object scalar_or_array(const py::handle& x, const char* function, const char* name, Scalar scalar, Kernel kernel) {
   if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) {
     return py::float_(scalar(as_double(x, function, name)));
   }

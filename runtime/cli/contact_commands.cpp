@@ -28,8 +28,8 @@ std::vector<Contact> solve_within_tolerance(const Surface& surface, const std::v
 
 }  // namespace
 
-std::string contact_rows(const Surface& surface, const std::vector<double>& loads,
-                         std::optional<double> pstar_load, const SolverOptions& options) {
+std::string contact_rows(const Surface& surface, const std::vector<double>& loads, std::optional<double> pstar_load,
+                         const SolverOptions& options) {
   const std::vector<Contact> contacts = solve_within_tolerance(surface, loads, options);
   std::ostringstream os;
   os << "P,pa," << (pstar_load ? "pa_over_pstar," : "")
@@ -37,9 +37,9 @@ std::string contact_rows(const Surface& surface, const std::vector<double>& load
   for (const Contact& c : contacts) {
     os << all_digits(c.load()) << "," << all_digits(c.load() / (2 * surface.b1())) << ",";
     if (pstar_load) os << all_digits(c.load() / *pstar_load) << ",";
-    os << c.zones_per_period() << "," << all_digits(c.contact_fraction()) << "," << (c.full_contact() ? 1 : 0)
-       << "," << all_digits(c.pressure(0)) << "," << all_digits(c.max_pressure()) << ","
-       << all_digits(c.x_of_max_pressure()) << "," << all_digits(c.error_estimate()) << "\n";
+    os << c.zones_per_period() << "," << all_digits(c.contact_fraction()) << "," << (c.full_contact() ? 1 : 0) << ","
+       << all_digits(c.pressure(0)) << "," << all_digits(c.max_pressure()) << "," << all_digits(c.x_of_max_pressure())
+       << "," << all_digits(c.error_estimate()) << "\n";
   }
   return os.str();
 }

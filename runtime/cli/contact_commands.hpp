@@ -12,8 +12,8 @@ namespace wavecontact::cli {
 
 // One row per load: the zones, the contact fraction, p(0), the largest pressure and the
 // error estimate. pstar_load = pi E* H1 (P at pa/p* = 1) where the surface has an H1.
-std::string contact_rows(const Surface& surface, const std::vector<double>& loads,
-                         std::optional<double> pstar_load, const SolverOptions& options);
+std::string contact_rows(const Surface& surface, const std::vector<double>& loads, std::optional<double> pstar_load,
+                         const SolverOptions& options);
 
 // One row per zone of the period [-b1, b1): its ends, the load it carries, its largest
 // pressure and where.

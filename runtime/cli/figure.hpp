@@ -12,8 +12,8 @@ namespace wavecontact::cli {
 struct Figure {
   std::string name;     // file stem
   std::string caption;  // what it shows, for REPORT.md
-  std::string csv;     // table with a header line
-  std::string script;  // gnuplot commands after the terminal/output lines
+  std::string csv;      // table with a header line
+  std::string script;   // gnuplot commands after the terminal/output lines
 };
 
 // 10 significant digits, for the tables.
@@ -42,19 +42,19 @@ TwoScaleSweeps two_scale_sweeps(const std::vector<int>& ns, double top, int coun
 std::string discrepancy_report(const std::vector<Figure>& figures, const TwoScaleSweeps& sweeps);
 
 // The seed paper's figures.
-Figure wave_curves();              // Fig. 1
-Figure two_scale_profiles();       // Fig. 2
-Figure roughness_integrand();      // Fig. 4
-Figure single_asperity_pressure();  // Fig. 5a
-Figure periodic_pressure();         // Fig. 5b
-Figure contact_length();           // Fig. 6, to full contact
+Figure wave_curves();                                  // Fig. 1
+Figure two_scale_profiles();                           // Fig. 2
+Figure roughness_integrand();                          // Fig. 4
+Figure single_asperity_pressure();                     // Fig. 5a
+Figure periodic_pressure();                            // Fig. 5b
+Figure contact_length();                               // Fig. 6, to full contact
 Figure centre_pressure(const TwoScaleSweeps& sweeps);  // Fig. 7, every load
-Figure two_scale_contact_area();   // Fig. 8
+Figure two_scale_contact_area();                       // Fig. 8
 
 // Beyond the seed: the most uniform pressure (shape design), the contact fraction and zones
 // per period of the two-scale profile, the pressure at a multi-zone load.
-Figure shape_design();             // fig9
+Figure shape_design();                                            // fig9
 Figure contact_fraction_and_zones(const TwoScaleSweeps& sweeps);  // fig10
-Figure multi_zone_pressure();      // fig11
+Figure multi_zone_pressure();                                     // fig11
 
 }  // namespace wavecontact::cli

@@ -129,10 +129,9 @@ Figure centre_pressure(const TwoScaleSweeps& sweeps) {
       const double a = b1 / 2 * (i + 1) / samples;
       const TwoScaleContact exact(params, a, Form::exact), printed(params, a, Form::paper);
       const std::size_t j = static_cast<std::size_t>(i) * s.contacts.size() / samples;
-      csv << s.n << "," << number(s.m) << "," << number(s.ratios[j]) << ","
-          << number(s.contacts[j].pressure(0)) << "," << number(exact.load() / pi_E_H1) << ","
-          << number(exact.waviness_pressure(0) + exact.roughness_pressure(0)) << "," << (exact.admissible() ? 1 : 0)
-          << "," << number(printed.load() / pi_E_H1) << ","
+      csv << s.n << "," << number(s.m) << "," << number(s.ratios[j]) << "," << number(s.contacts[j].pressure(0)) << ","
+          << number(exact.load() / pi_E_H1) << "," << number(exact.waviness_pressure(0) + exact.roughness_pressure(0))
+          << "," << (exact.admissible() ? 1 : 0) << "," << number(printed.load() / pi_E_H1) << ","
           << number(printed.waviness_pressure(0) + printed.roughness_pressure(0)) << ","
           << number(exact.waviness_load() / pi_E_H1) << "," << number(exact.waviness_pressure(0)) << "\n";
     }
@@ -140,7 +139,8 @@ Figure centre_pressure(const TwoScaleSweeps& sweeps) {
   std::string script =
       "set multiplot layout 1,2 title \"Fig. 7: p(0) against pa/p*, H1 = 1 mm, H2 = 0.15 mm, b1 = 10 mm\\n(thick: "
       "the contact; thin: one zone, dashed where not the contact; dotted: printed eq. 14 + 20; grey: waviness)\"\n"
-      "set xlabel 'pa / p*'\nset ylabel 'p(0) / E*'\nset key top left font ',8'\nset xrange [0:1.2]\nset yrange [0:*]\n";
+      "set xlabel 'pa / p*'\nset ylabel 'p(0) / E*'\nset key top left font ',8'\nset xrange [0:1.2]\nset yrange "
+      "[0:*]\n";
   for (int panel = 0; panel < 2; ++panel) {
     std::vector<std::string> curves;
     for (int k = 0; k < 2; ++k) {
@@ -212,17 +212,20 @@ Figure multi_zone_pressure() {
   csv << "x_mm,p_contact,gap_mm,p_single_zone\n";
   for (int i = 0; i < samples; ++i) {
     const double x = -b1 + 2 * b1 * i / (samples - 1.0);
-    const double p1 = std::isfinite(a) && std::fabs(x) < a ? single.waviness_pressure(x) + single.roughness_pressure(x) : 0;
+    const double p1 =
+        std::isfinite(a) && std::fabs(x) < a ? single.waviness_pressure(x) + single.roughness_pressure(x) : 0;
     csv << number(x) << "," << number(c.pressure(x)) << "," << number(c.gap(x)) << "," << number(p1) << "\n";
   }
-  const std::string title = "fig11: n = 8, m = 0, H2 = 0.15 mm, pa/p* = 0.3: " + std::to_string(c.zones_per_period()) +
-                            " zones per period";
-  std::string script = "set multiplot layout 2,1 title '" + title + "'\nset xlabel 'x [mm]'\nset key top right\n"
+  const std::string title =
+      "fig11: n = 8, m = 0, H2 = 0.15 mm, pa/p* = 0.3: " + std::to_string(c.zones_per_period()) + " zones per period";
+  std::string script = "set multiplot layout 2,1 title '" + title +
+                       "'\nset xlabel 'x [mm]'\nset key top right\n"
                        "set ylabel 'p / E*'\n" +
                        plot({lines_of("fig11.csv", "", "1:2", 1, 2, 1, "the contact"),
-                             lines_of("fig11.csv", "", "1:4", 2, 1, 2, "one zone carrying the load (eq. 21, exact parts): not the contact")}) +
-                       "set ylabel 'gap [mm]'\n" + plot({lines_of("fig11.csv", "", "1:3", 3, 2, 1, "gap of the contact")}) +
-                       "unset multiplot\n";
+                             lines_of("fig11.csv", "", "1:4", 2, 1, 2,
+                                      "one zone carrying the load (eq. 21, exact parts): not the contact")}) +
+                       "set ylabel 'gap [mm]'\n" +
+                       plot({lines_of("fig11.csv", "", "1:3", 3, 2, 1, "gap of the contact")}) + "unset multiplot\n";
   return {"fig11",
           "fig11: pressure and gap at a multi-zone load (n = 8, m = 0, pa/p* = 0.3) beside the seed's single zone "
           "carrying the same load",

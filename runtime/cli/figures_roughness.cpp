@@ -19,11 +19,10 @@ constexpr double H1 = 1.0, b1 = 10.0, E = 1.0;  // mm, mm, pressures in units of
 const double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
 // Solid for the exact solution, dashed for the printed formulas, one colour per curve.
-std::string curve(const std::string& file, const std::string& rows, const std::string& columns,
-                  int colour, bool exact, const std::string& title) {
-  return "'" + file + "' skip 1" + rows + " using " + columns + " with lines lw " +
-         (exact ? "2" : "1") + " lc " + std::to_string(colour) + " dt " + (exact ? "1" : "2") +
-         " title '" + title + "'";
+std::string curve(const std::string& file, const std::string& rows, const std::string& columns, int colour, bool exact,
+                  const std::string& title) {
+  return "'" + file + "' skip 1" + rows + " using " + columns + " with lines lw " + (exact ? "2" : "1") + " lc " +
+         std::to_string(colour) + " dt " + (exact ? "1" : "2") + " title '" + title + "'";
 }
 
 std::string plot(const std::vector<std::string>& curves) {
@@ -48,8 +47,7 @@ Figure two_scale_profiles() {
   return {"fig2", "Fig. 2: two-scale profile, H2 = 0.05 mm, n = 16, m = 0 and 10", csv.str(),
           "set title 'Fig. 2: two-scale profile, H1 = 1 mm, b1 = 10 mm, H2 = 0.05 mm, n = 16'\n"
           "set xlabel 'x [mm]'\nset ylabel 'y [mm]'\nset key outside right\n" +
-              plot({curve("fig2.csv", "", "1:2", 1, true, "m = 0"),
-                    curve("fig2.csv", "", "1:3", 2, true, "m = 10")})};
+              plot({curve("fig2.csv", "", "1:2", 1, true, "m = 0"), curve("fig2.csv", "", "1:3", 2, true, "m = 10")})};
 }
 
 // Fig. 4: the bracket of eq. 17, s(v) = sin(n x^)/n with v = tan(x^/2), for v in [0, 1].
@@ -66,12 +64,13 @@ Figure roughness_integrand() {
   }
   std::vector<std::string> curves;
   for (std::size_t k = 0; k < ns.size(); ++k) {
-    curves.push_back(curve("fig4.csv", "", "1:" + std::to_string(k + 2), static_cast<int>(k + 1),
-                           true, "n = " + std::to_string(ns[k])));
+    curves.push_back(curve("fig4.csv", "", "1:" + std::to_string(k + 2), static_cast<int>(k + 1), true,
+                           "n = " + std::to_string(ns[k])));
   }
   return {"fig4", "Fig. 4: s(v), the integrand of eq. 17, for n = 8, 16, 32", csv.str(),
           "set title 'Fig. 4: s(v) = sin(n x)/n, v = tan(x/2) (eq. 17)'\n"
-          "set xlabel 'v'\nset ylabel 's(v)'\nset key outside right\n" + plot(curves)};
+          "set xlabel 'v'\nset ylabel 's(v)'\nset key outside right\n" +
+              plot(curves)};
 }
 
 namespace {
@@ -117,8 +116,8 @@ Figure two_scale_contact_area() {
       const TwoScaleContact exact(params, a, Form::exact), printed(params, a, Form::paper);
       csv << c.n << "," << number(c.m) << "," << number(a / b1) << ","
           << number(exact.admissible() ? exact.load() / pi_E_H1 : not_a_number) << ","
-          << number(printed.load() / pi_E_H1) << "," << number(exact.waviness_load() / pi_E_H1)
-          << "," << (exact.admissible() ? 1 : 0) << "\n";
+          << number(printed.load() / pi_E_H1) << "," << number(exact.waviness_load() / pi_E_H1) << ","
+          << (exact.admissible() ? 1 : 0) << "\n";
     }
   }
   std::string script =
@@ -126,12 +125,13 @@ Figure two_scale_contact_area() {
       "(solid: exact; dashed: printed eq. 14/20; gaps: no admissible single zone)'\n"
       "set xlabel 'pa / p*'\nset ylabel '2a / L1'\nset key bottom right font ',8'\n";
   script += panels_by_n(samples, [](const std::string& rows, int colour, const std::string& m) {
-    return std::vector<std::string>{
-        curve("fig8.csv", rows, "4:3", colour, true, m + ", two-scale, exact"),
-        curve("fig8.csv", rows, "5:3", colour, false, m + ", two-scale, printed"),
-        curve("fig8.csv", rows, "6:3", colour + 1, true, m + ", single-scale")};
+    return std::vector<std::string>{curve("fig8.csv", rows, "4:3", colour, true, m + ", two-scale, exact"),
+                                    curve("fig8.csv", rows, "5:3", colour, false, m + ", two-scale, printed"),
+                                    curve("fig8.csv", rows, "6:3", colour + 1, true, m + ", single-scale")};
   });
-  return {"fig8", "Fig. 8: contact area against mean pressure, two-scale against single-scale, n = 8 and 16, m = 0 and 10", csv.str(), script};
+  return {"fig8",
+          "Fig. 8: contact area against mean pressure, two-scale against single-scale, n = 8 and 16, m = 0 and 10",
+          csv.str(), script};
 }
 
 }  // namespace wavecontact::cli

@@ -42,8 +42,8 @@ Figure wave_curves() {
   plot << "set title 'Fig. 1: parametric wave curve w(x, m), H1 = 1 mm, b1 = 10 mm'\n"
           "set xlabel 'x [mm]'\nset ylabel 'w [mm]'\nset key outside right\nplot ";
   for (std::size_t k = 0; k < ms.size(); ++k) {
-    plot << (k ? ", " : "") << "'fig1.csv' skip 1 using 1:" << k + 2 << " with lines lw 2 title 'm = "
-         << number(ms[k]) << "'";
+    plot << (k ? ", " : "") << "'fig1.csv' skip 1 using 1:" << k + 2 << " with lines lw 2 title 'm = " << number(ms[k])
+         << "'";
   }
   return {"fig1", "Fig. 1: the parametric wave curve, m = 0.2, 2, 8, 35, 250", csv.str(), plot.str() + "\n"};
 }
@@ -51,9 +51,8 @@ Figure wave_curves() {
 // Fig. 5: pressure distributions for several m, one panel per contact half-width, exact
 // (solid) against the printed eq. 14 (dashed; beyond b1/2 only where its continuation is
 // defined, 1 + m cos(pi a/b1) > 0).
-Figure pressure_distributions(const std::string& name, const std::string& caption,
-                              const std::string& title, const std::vector<double>& fractions,
-                              double clip) {
+Figure pressure_distributions(const std::string& name, const std::string& caption, const std::string& title,
+                              const std::vector<double>& fractions, double clip) {
   const std::vector<double> ms{0, 0.2, 2, 10, 35};
   constexpr int samples = 201;
   std::ostringstream csv, plot;
@@ -70,17 +69,16 @@ Figure pressure_distributions(const std::string& name, const std::string& captio
       const bool printed = f <= 0.5 || 1 + ms[k] * std::cos(M_PI * f) > 0;
       for (int i = 0; i < samples; ++i) {
         const double x = -a + 2 * a * i / (samples - 1.0);
-        csv << number(f) << "," << number(ms[k]) << "," << number(x) << ","
-            << number(pressure(p, a, x, Form::exact)) << ","
-            << (printed ? number(pressure(p, a, x, Form::paper)) : "NaN") << "\n";
+        csv << number(f) << "," << number(ms[k]) << "," << number(x) << "," << number(pressure(p, a, x, Form::exact))
+            << "," << (printed ? number(pressure(p, a, x, Form::paper)) : "NaN") << "\n";
       }
       const std::string rows = rows_of_block(block, samples);
       const std::string color = " lc " + std::to_string(k + 1);
       curves.push_back("'" + name + ".csv' skip 1" + rows + " using 3:4 with lines lw 2" + color +
                        " dt 1 title 'm = " + number(ms[k]) + " exact'");
       if (ms[k] != 0 && printed) {  // identical at m = 0 (Westergaard)
-        curves.push_back("'" + name + ".csv' skip 1" + rows + " using 3:5 with lines lw 1" +
-                         color + " dt 2 title 'm = " + number(ms[k]) + " printed'");
+        curves.push_back("'" + name + ".csv' skip 1" + rows + " using 3:5 with lines lw 1" + color +
+                         " dt 2 title 'm = " + number(ms[k]) + " printed'");
       }
     }
     // The printed eq. 14 has tall edge peaks for large m: clip them.
@@ -94,9 +92,9 @@ Figure pressure_distributions(const std::string& name, const std::string& captio
 }
 
 Figure single_asperity_pressure() {
-  return pressure_distributions(
-      "fig5a", "Fig. 5a: pressure, single-asperity regime (a = 0.25 b1 and 0.5 b1), exact and printed",
-      "Fig. 5a: single-asperity regime,", {0.25, 0.5}, 3.5);
+  return pressure_distributions("fig5a",
+                                "Fig. 5a: pressure, single-asperity regime (a = 0.25 b1 and 0.5 b1), exact and printed",
+                                "Fig. 5a: single-asperity regime,", {0.25, 0.5}, 3.5);
 }
 
 Figure periodic_pressure() {
@@ -104,8 +102,7 @@ Figure periodic_pressure() {
       "fig5b",
       "Fig. 5b: pressure, periodic regime (a = 0.75 b1 and 0.95 b1); negative where the single "
       "zone is not admissible",
-      "Fig. 5b: periodic regime (p < 0: no single zone; the contact separates),",
-      {0.75, 0.95}, 3.5);
+      "Fig. 5b: periodic regime (p < 0: no single zone; the contact separates),", {0.75, 0.95}, 3.5);
 }
 
 }  // namespace wavecontact::cli

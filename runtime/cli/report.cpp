@@ -30,9 +30,7 @@ std::string fixed(double value, int digits) {
   return buffer;
 }
 
-std::string percent(double got, double reference) {
-  return fixed(100 * (got - reference) / reference, 3) + " %";
-}
+std::string percent(double got, double reference) { return fixed(100 * (got - reference) / reference, 3) + " %"; }
 
 // The largest pressure in the zone: the best of 2001 samples, refined by Brent's method.
 double maximum_pressure(const WavinessParams& p, double a, Form form) {
@@ -65,10 +63,9 @@ std::string waviness_table() {
       const double top_printed = maximum_pressure(p, a, Form::paper);
       const double P = load(p, a), P_printed = printed_load_by_quadrature(p, a);
       const double digits = -std::log10(std::max(std::abs(P_printed - P) / P, 1e-17));
-      md << "| " << number(m) << " | " << number(f) << " | " << fixed(p0, 6) << " | "
-         << fixed(p0_printed, 6) << " | " << percent(p0_printed, p0) << " | " << fixed(top, 6)
-         << " | " << fixed(top_printed, 6) << " | " << percent(top_printed, top) << " | "
-         << fixed(digits, 1) << " |\n";
+      md << "| " << number(m) << " | " << number(f) << " | " << fixed(p0, 6) << " | " << fixed(p0_printed, 6) << " | "
+         << percent(p0_printed, p0) << " | " << fixed(top, 6) << " | " << fixed(top_printed, 6) << " | "
+         << percent(top_printed, top) << " | " << fixed(digits, 1) << " |\n";
     }
   }
   return md.str();
@@ -83,8 +80,8 @@ std::string roughness_table() {
       const double a = f * pi / n;
       const double exact = TwoScaleContact(params, a, Form::exact).roughness_pressure(0);
       const double printed = TwoScaleContact(params, a, Form::paper).roughness_pressure(0);
-      md << "| " << n << " | " << number(f) << " | " << fixed(exact, 8) << " | " << fixed(printed, 8)
-         << " | " << percent(printed, exact) << " |\n";
+      md << "| " << n << " | " << number(f) << " | " << fixed(exact, 8) << " | " << fixed(printed, 8) << " | "
+         << percent(printed, exact) << " |\n";
     }
   }
   return md.str();
@@ -139,18 +136,19 @@ std::string snap_through_table() {
     const LoadCurve curve(p);
     std::string ranges;
     for (const HalfWidthRange& r : curve.unstable_ranges()) {
-      ranges += (ranges.empty() ? "" : ", ") + std::string("[") + fixed(r.begin / pi, 4) + ", " +
-                fixed(r.end / pi, 4) + "]";
+      ranges +=
+          (ranges.empty() ? "" : ", ") + std::string("[") + fixed(r.begin / pi, 4) + ", " + fixed(r.end / pi, 4) + "]";
     }
     const Surface surface(p);
-    const double negative =
-        first_failure(pi / 2, 0.999 * pi, [&](double a) { return single_zone_check(surface, a).lowest_pressure < 0; }, 8);
-    const double valley =
-        first_failure(0.05 * pi, 0.999 * pi, [&](double a) { return single_zone_check(surface, a).penetrates; }, 16);
+    const double negative = first_failure(
+        pi / 2, 0.999 * pi, [&](double a) { return single_zone_check(surface, a).lowest_pressure < 0; }, 8);
+    const double valley = first_failure(
+        0.05 * pi, 0.999 * pi, [&](double a) { return single_zone_check(surface, a).penetrates; }, 16);
     const double full = full_contact_load(Surface(p)) / pi;
     const double two = valley < 0.999 * pi ? pa_over_pstar(p, valley) : full;
-    md << "| " << number(m) << " | " << (ranges.empty() ? "none" : ranges) << " | " << fixed(curve.maximum_load() / pi, 4)
-       << " | " << limit(negative, 0.999 * pi, pi, negative < pi ? pa_over_pstar(p, negative) : 0) << " | "
+    md << "| " << number(m) << " | " << (ranges.empty() ? "none" : ranges) << " | "
+       << fixed(curve.maximum_load() / pi, 4) << " | "
+       << limit(negative, 0.999 * pi, pi, negative < pi ? pa_over_pstar(p, negative) : 0) << " | "
        << limit(valley, 0.999 * pi, pi, valley < pi ? pa_over_pstar(p, valley) : 0) << " | "
        << (valley < 0.999 * pi ? fixed(two, 4) : "never") << " | " << fixed(full, 4) << " |\n";
   }
@@ -177,9 +175,10 @@ std::string two_scale_limits_table(const TwoScaleSweeps& sweeps) {
       }
       return std::to_string(s.contacts[best].zones_per_period());
     };
-    md << "| " << s.n << " | " << number(s.m) << " | " << limit(by_pressure, 5.0, 10.0, by_pressure < 5 ? ratio(by_pressure) : 0)
-       << " | " << limit(by_both, 5.0, 10.0, by_both < 5 ? ratio(by_both) : 0) << " | " << zones_at(0.3) << " / " << zones_at(0.6)
-       << " / " << zones_at(1.2) << " |\n";
+    md << "| " << s.n << " | " << number(s.m) << " | "
+       << limit(by_pressure, 5.0, 10.0, by_pressure < 5 ? ratio(by_pressure) : 0) << " | "
+       << limit(by_both, 5.0, 10.0, by_both < 5 ? ratio(by_both) : 0) << " | " << zones_at(0.3) << " / "
+       << zones_at(0.6) << " / " << zones_at(1.2) << " |\n";
   }
   return md.str();
 }
@@ -200,8 +199,8 @@ std::string two_scale_departure_table(const TwoScaleSweeps& sweeps) {
       const Contact& c = s.contacts[k];
       const double P = s.ratios[k] * pi;
       const double p0 = c.pressure(0);
-      md << "| " << s.n << " | " << number(s.m) << " | " << fixed(s.ratios[k], 3) << " | " << c.zones_per_period() << ", "
-         << fixed(c.contact_fraction(), 4) << ", " << fixed(p0, 4) << " | ";
+      md << "| " << s.n << " | " << number(s.m) << " | " << fixed(s.ratios[k], 3) << " | " << c.zones_per_period()
+         << ", " << fixed(c.contact_fraction(), 4) << ", " << fixed(p0, 4) << " | ";
       // The exact single zone carrying P: the first a where the load of eq. 21 reaches it.
       const RoughnessEvaluator roughness = roughness_evaluator(s.n);
       const auto zone_load = [&](double a) {
@@ -219,7 +218,8 @@ std::string two_scale_departure_table(const TwoScaleSweeps& sweeps) {
         md << "none | | ";
       }
       // The printed single zone carrying P: the first a in (0, b1/2] where its load reaches P.
-      const double a = first_failure(0.001, 5.0, [&](double x) { return TwoScaleContact(params, x, Form::paper).load() >= P; });
+      const double a =
+          first_failure(0.001, 5.0, [&](double x) { return TwoScaleContact(params, x, Form::paper).load() >= P; });
       if (a < 5.0) {
         const TwoScaleContact printed(params, a, Form::paper);
         const double q = printed.waviness_pressure(0) + printed.roughness_pressure(0);
@@ -249,8 +249,7 @@ std::string discrepancy_report(const std::vector<Figure>& figures, const TwoScal
         "load with eq. 6 applied to the printed eq. 14 by 61-point Gauss-Kronrod quadrature: the "
         "two loads are equal (a symbolic identity, proven in tests/symbolic_test.cpp), so the "
         "digits in common are those of the quadrature.\n\n"
-     << waviness_table()
-     << "\n## Eq. 20 against the exact roughness pressure (centre of the zone, n H2 = n)\n\n"
+     << waviness_table() << "\n## Eq. 20 against the exact roughness pressure (centre of the zone, n H2 = n)\n\n"
      << roughness_table()
      << "\n## The wave curve: snap-through goes to two zones, then full contact\n\n"
         "P(a) of one zone (docs/mathematics.md fact 7) is not monotone for m above about 0.7. But one zone stops being "
@@ -262,8 +261,7 @@ std::string discrepancy_report(const std::vector<Figure>& figures, const TwoScal
         "with the load's peak and comes too late. The snap-through of the seed's Fig. 6 text therefore "
         "never happens: the contact grows continuously from one zone to two and to full contact "
         "(Fig. 6).\n\n"
-     << snap_through_table()
-     << "\nP(a) first has a turning point at m = " << fixed(snap_through_onset(), 4)
+     << snap_through_table() << "\nP(a) first has a turning point at m = " << fixed(snap_through_onset(), 4)
      << " (bisection on m to 1e-4).\n"
         "\n## The two-scale profile: where one zone stops being the contact\n\n"
         "Eq. 21 superposes one zone of the waviness and one of the roughness. It is the contact only while "

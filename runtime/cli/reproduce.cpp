@@ -73,7 +73,7 @@ void require_png(const fs::path& path) {
 }  // namespace
 
 void reproduce(const std::string& out_dir, const std::vector<std::string>& only, std::ostream& log) {
-  const std::vector<std::string> names{"fig1", "fig2", "fig4",  "fig5a", "fig5b", "fig6",
+  const std::vector<std::string> names{"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6",
                                        "fig7", "fig8", "fig9", "fig10", "fig11"};
   for (const std::string& name : only) {
     if (std::find(names.begin(), names.end(), name) == names.end()) {
@@ -94,8 +94,9 @@ void reproduce(const std::string& out_dir, const std::vector<std::string>& only,
   // The figures are independent: each is computed on its own thread (the two-scale sweeps,
   // which fig7, fig10 and the report share, on one more), then written in order.
   const bool need_sweeps = wanted("fig7") || wanted("fig10");
-  const std::shared_future<TwoScaleSweeps> sweeps =
-      std::async(std::launch::async, [need_sweeps] { return need_sweeps ? two_scale_sweeps({8, 16}, 1.2, 60) : TwoScaleSweeps{}; });
+  const std::shared_future<TwoScaleSweeps> sweeps = std::async(std::launch::async, [need_sweeps] {
+    return need_sweeps ? two_scale_sweeps({8, 16}, 1.2, 60) : TwoScaleSweeps{};
+  });
   std::vector<std::future<Figure>> pending;
   const auto compute = [&](const char* name, std::function<Figure()> build) {
     if (wanted(name)) pending.push_back(std::async(std::launch::async, std::move(build)));
@@ -115,10 +116,11 @@ void reproduce(const std::string& out_dir, const std::vector<std::string>& only,
   for (std::future<Figure>& f : pending) figures.push_back(f.get());
   for (const Figure& figure : figures) {
     write(dir / (figure.name + ".csv"), figure.csv);
-    write(dir / (figure.name + ".gp"),
-          "set terminal pngcairo size 1100,650 font 'DejaVu Sans,10'\nset output '" +
-              figure.name + ".png'\nset datafile separator ','\n"
-              "set grid\n" + figure.script);
+    write(dir / (figure.name + ".gp"), "set terminal pngcairo size 1100,650 font 'DejaVu Sans,10'\nset output '" +
+                                           figure.name +
+                                           ".png'\nset datafile separator ','\n"
+                                           "set grid\n" +
+                                           figure.script);
     run_gnuplot(dir, figure.name + ".gp");
     require_png(dir / (figure.name + ".png"));
     log << "wrote " << (dir / (figure.name + ".png")).string() << "\n";

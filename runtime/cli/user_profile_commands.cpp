@@ -15,12 +15,12 @@ namespace {
 void require_admissible(const Profile& profile, double a) {
   const Admissibility check = admissibility(profile, a);
   if (!check.admissible) {
-    const std::string why =
-        check.most_negative_pressure < 0
-            ? "the pressure is p = " + all_digits(check.most_negative_pressure) + " < 0 at x = " +
-                  all_digits(check.most_negative_x) + " (the contact would separate)"
-            : "the surface penetrates by " + all_digits(-check.lowest_gap) + " at x = +-" +
-                  all_digits(check.x_of_lowest_gap) + " (the gap would be negative)";
+    const std::string why = check.most_negative_pressure < 0
+                                ? "the pressure is p = " + all_digits(check.most_negative_pressure) +
+                                      " < 0 at x = " + all_digits(check.most_negative_x) +
+                                      " (the contact would separate)"
+                                : "the surface penetrates by " + all_digits(-check.lowest_gap) + " at x = +-" +
+                                      all_digits(check.x_of_lowest_gap) + " (the gap would be negative)";
     throw InadmissibleError("no single-zone solution at a = " + all_digits(a) + ": " + why +
                             "; solve --P gives the contact at a load");
   }
@@ -30,16 +30,15 @@ void require_admissible(const Profile& profile, double a) {
 std::vector<Equilibrium> user_profile_equilibria(const Profile& profile, double P) {
   const std::vector<Equilibrium> roots = LoadCurve(profile).equilibria(P);
   if (roots.empty()) {
-    throw UsageError("no single contact zone 0 < a < " + all_digits(profile.reach()) +
-                     " carries P = " + all_digits(P) + " (solve without --single-zone gives the contact)");
+    throw UsageError("no single contact zone 0 < a < " + all_digits(profile.reach()) + " carries P = " + all_digits(P) +
+                     " (solve without --single-zone gives the contact)");
   }
   return roots;
 }
 
 }  // namespace
 
-Profile user_profile(const std::string& name, const std::vector<std::string>& parameters,
-                     double b1, double E) {
+Profile user_profile(const std::string& name, const std::vector<std::string>& parameters, double b1, double E) {
   ProfileParams params{name, {}, b1, E};
   for (const auto& text : parameters) {
     const auto equals = text.find('=');
@@ -66,8 +65,8 @@ std::string user_profile_pressure(const Profile& profile, double a, const std::v
 
 std::string user_profile_load(const Profile& profile, double a) {
   const double P = profile.load(a), b1 = profile.params().b1;
-  return "a,P,pa,contact_fraction,load_slope\n" + all_digits(a) + "," + all_digits(P) + "," +
-         all_digits(P / (2 * b1)) + "," + all_digits(a / b1) + "," + all_digits(profile.load_slope(a)) + "\n";
+  return "a,P,pa,contact_fraction,load_slope\n" + all_digits(a) + "," + all_digits(P) + "," + all_digits(P / (2 * b1)) +
+         "," + all_digits(a / b1) + "," + all_digits(profile.load_slope(a)) + "\n";
 }
 
 std::string user_profile_solve(const Profile& profile, double P) {
@@ -76,9 +75,8 @@ std::string user_profile_solve(const Profile& profile, double P) {
   bool any_admissible = false;
   for (const auto& e : found) {
     any_admissible = any_admissible || e.admissible;
-    rows += all_digits(profile.load(e.a)) + "," + all_digits(e.a) + "," +
-            all_digits(e.a / profile.params().b1) + "," + (e.stable ? "1" : "0") + "," +
-            (e.admissible ? "1" : "0") + "\n";
+    rows += all_digits(profile.load(e.a)) + "," + all_digits(e.a) + "," + all_digits(e.a / profile.params().b1) + "," +
+            (e.stable ? "1" : "0") + "," + (e.admissible ? "1" : "0") + "\n";
   }
   if (!any_admissible) require_admissible(profile, found.front().a);  // throws
   return "P,a,contact_fraction,stable,admissible\n" + rows;

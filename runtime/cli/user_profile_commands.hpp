@@ -11,8 +11,7 @@
 namespace wavecontact::cli {
 
 // The profile `name` with the parameters "NAME=VALUE" (UsageError if one is malformed).
-Profile user_profile(const std::string& name, const std::vector<std::string>& parameters,
-                     double b1, double E);
+Profile user_profile(const std::string& name, const std::vector<std::string>& parameters, double b1, double E);
 
 // CSV bodies with their header lines of one zone (--a) or the single-zone family
 // (solve --single-zone); InadmissibleError if p < 0 in the zone or the gap < 0 off it.

@@ -40,7 +40,8 @@ CauchyAtomTable::CauchyAtomTable(const Atoms& atoms, int count, const std::vecto
     for (int j = 0; j < nodes; ++j) {
       for (int a = 0; a < count; ++a) {
         double sum = 0;
-        for (int i = 0; i < nodes; ++i) sum += values[static_cast<std::size_t>(i * count + a)] * std::cos(pi * j * (i + 0.5) / nodes);
+        for (int i = 0; i < nodes; ++i)
+          sum += values[static_cast<std::size_t>(i * count + a)] * std::cos(pi * j * (i + 0.5) / nodes);
         c[static_cast<std::size_t>(j * count + a)] = (j == 0 ? 1.0 : 2.0) * sum / nodes;
       }
     }
@@ -48,7 +49,8 @@ CauchyAtomTable::CauchyAtomTable(const Atoms& atoms, int count, const std::vecto
 }
 
 bool CauchyAtomTable::evaluate(double eta, double* out) const {
-  if (!(eta >= static_cast<double>(first_) && eta < static_cast<double>(first_) + static_cast<double>(panels_.size()))) {
+  if (!(eta >= static_cast<double>(first_) &&
+        eta < static_cast<double>(first_) + static_cast<double>(panels_.size()))) {
     return false;
   }
   const long k = static_cast<long>(std::floor(eta));

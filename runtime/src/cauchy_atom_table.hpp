@@ -33,7 +33,7 @@ class CauchyAtomTable {
 
  private:
   int count_ = 0;
-  long first_ = 0;  // the panel [first_ + i, first_ + i + 1] at i: its Chebyshev coefficients,
+  long first_ = 0;                           // the panel [first_ + i, first_ + i + 1] at i: its Chebyshev coefficients,
   std::vector<std::vector<double>> panels_;  // node by node, the atoms interleaved (empty: none)
 };
 

@@ -25,7 +25,8 @@ void require_options(const char* function, const SolverOptions& options) {
     detail::domain_error(function, "tolerance", options.tolerance, "1e-14 <= tolerance <= 1e-2");
   }
   if (options.nodes_per_zone != 0 && (options.nodes_per_zone < 4 || options.nodes_per_zone > 4096)) {
-    detail::domain_error(function, "nodes_per_zone", options.nodes_per_zone, "0 (adaptive) or 4 <= nodes_per_zone <= 4096");
+    detail::domain_error(function, "nodes_per_zone", options.nodes_per_zone,
+                         "0 (adaptive) or 4 <= nodes_per_zone <= 4096");
   }
   if (!(options.max_seconds > 0 && options.max_seconds <= 1e6)) {
     detail::domain_error(function, "max_seconds", options.max_seconds, "0 < max_seconds <= 1e6");
@@ -66,8 +67,9 @@ void Contact::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eig
   double* ps = p.data();
   detail::for_each_chunk(static_cast<std::size_t>(x.size()), 1, parallel_points_costly,
                          [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) ps[i] = pi / b1_ * solution_->pressure(pi * reduce_to_period(xs[i], b1_) / b1_);
-  });
+                           for (std::size_t i = begin; i < end; ++i)
+                             ps[i] = pi / b1_ * solution_->pressure(pi * reduce_to_period(xs[i], b1_) / b1_);
+                         });
 }
 
 double Contact::gap(double x) const {
@@ -111,7 +113,8 @@ std::vector<Contact> solve_contact(const Surface& surface, const std::vector<dou
       } else if (z.top()) {
         c.zones_.push_back({-right.x_end, right.x_end, 2 * half, right.max_pressure, right.x_of_max_pressure});
       } else if (z.valley()) {
-        c.zones_.push_back({right.x_start, 2 * b1 - right.x_start, 2 * half, right.max_pressure, right.x_of_max_pressure});
+        c.zones_.push_back(
+            {right.x_start, 2 * b1 - right.x_start, 2 * half, right.max_pressure, right.x_of_max_pressure});
       } else {
         c.zones_.push_back({-right.x_end, -right.x_start, half, right.max_pressure, -right.x_of_max_pressure});
         c.zones_.push_back(right);
@@ -138,8 +141,12 @@ SingleZoneCheck single_zone_check(const Surface& surface, double a) {
   detail::require_half_width(function, a, surface.b1(), surface.b1(), false, "b1 = " + detail::format(surface.b1()));
   const detail::SingleZoneResult r = detail::check_single_zone(surface.model(), pi * a / surface.b1());
   const double to_x = surface.b1() / pi;
-  return {r.solution, r.penetrates, r.lowest_gap, r.x_of_lowest_gap * to_x,
-          r.lowest_pressure * pi / surface.b1(), r.x_of_lowest_pressure * to_x};
+  return {r.solution,
+          r.penetrates,
+          r.lowest_gap,
+          r.x_of_lowest_gap * to_x,
+          r.lowest_pressure * pi / surface.b1(),
+          r.x_of_lowest_pressure * to_x};
 }
 
 }  // namespace wavecontact

@@ -23,8 +23,8 @@ Isa requested_isa() {
 
 Isa cpu_isa() {
   static const Isa best = !(__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) ? Isa::scalar
-                          : __builtin_cpu_supports("avx512f")                                 ? Isa::avx512
-                                                                                              : Isa::avx2;
+                          : __builtin_cpu_supports("avx512f")                                ? Isa::avx512
+                                                                                             : Isa::avx2;
   return best;
 }
 

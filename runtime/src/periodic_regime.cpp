@@ -29,16 +29,16 @@ struct SideForms {
 };
 
 #define WAVECONTACT_PART(side, part) generated::waviness_pressure_beyond_half_##side##_##part
-#define WAVECONTACT_PARTS(side, suffix, after)                                                              \
-  WAVECONTACT_PART(side, own##suffix) after, WAVECONTACT_PART(side, own_edge##suffix) after,                 \
-      WAVECONTACT_PART(side, other_cauchy##suffix) after, WAVECONTACT_PART(side, other_cauchy_edge##suffix) after, \
-      WAVECONTACT_PART(side, other##suffix) after, WAVECONTACT_PART(side, other_edge##suffix) after,         \
-      WAVECONTACT_PART(side, jump##suffix) after
-#define WAVECONTACT_SIDE(side)                                                                              \
-  SideForms {                                                                                               \
-    {WAVECONTACT_PARTS(side, _atoms, <double>)}, {WAVECONTACT_PARTS(side, _atoms_outputs, )},               \
-        {WAVECONTACT_PARTS(side, , <double>)}, WAVECONTACT_PART(side, cauchy_argument)<double>,             \
-        WAVECONTACT_PART(side, own_argument)<double>, WAVECONTACT_PART(side, other_argument)<double>        \
+#define WAVECONTACT_PARTS(side, suffix, after)                                                               \
+  WAVECONTACT_PART(side, own##suffix)                                                                        \
+  after, WAVECONTACT_PART(side, own_edge##suffix) after, WAVECONTACT_PART(side, other_cauchy##suffix) after, \
+      WAVECONTACT_PART(side, other_cauchy_edge##suffix) after, WAVECONTACT_PART(side, other##suffix) after,  \
+      WAVECONTACT_PART(side, other_edge##suffix) after, WAVECONTACT_PART(side, jump##suffix) after
+#define WAVECONTACT_SIDE(side)                                                                       \
+  SideForms {                                                                                        \
+    {WAVECONTACT_PARTS(side, _atoms, <double>)}, {WAVECONTACT_PARTS(side, _atoms_outputs, )},        \
+        {WAVECONTACT_PARTS(side, , <double>)}, WAVECONTACT_PART(side, cauchy_argument)<double>,      \
+        WAVECONTACT_PART(side, own_argument)<double>, WAVECONTACT_PART(side, other_argument)<double> \
   }
 constexpr SideForms top_forms = WAVECONTACT_SIDE(top), flank_forms = WAVECONTACT_SIDE(flank);
 #undef WAVECONTACT_SIDE
@@ -102,8 +102,9 @@ void BeyondHalfZone::pressures(double a, double b1, const double* x, double* p, 
   flank_.tabulate_cauchy(flank_etas);
   for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
-      p[i] = inside[i] ? side(points[i]).pressure(points[i], other_over_own(m_, points[i].Cx), points[i].Cx == 0, etas[i])
-                       : 0.0;
+      p[i] = inside[i]
+                 ? side(points[i]).pressure(points[i], other_over_own(m_, points[i].Cx), points[i].Cx == 0, etas[i])
+                 : 0.0;
     }
   });
 }

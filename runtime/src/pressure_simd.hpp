@@ -36,12 +36,10 @@ inline constexpr std::size_t simd_block = 256;
 
 // p[i] for the points x[i], i < count (finite, any period); 0 outside the zone. On the
 // widest ISA of array_kernel_isa(); call only if simd_pressure_available().
-void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p,
-                   std::size_t count);
+void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p, std::size_t count);
 
 // p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period); as above.
-void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
-                                 std::size_t count);
+void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count);
 
 // The angle atoms of the points x[i], i < count (finite, any period), for a zone 0 < a <= b1,
 // from the bounded sines as the kernels take them: angles[i] where |x[i]| reduced to the period

@@ -142,8 +142,7 @@ void pressure_blocks(double b1, double a, double Ca, double Sa, const double* x,
 }
 
 template <typename Evaluator>
-void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::size_t count,
-                     const Evaluator& evaluate) {
+void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::size_t count, const Evaluator& evaluate) {
   pressure_blocks<true>(
       z.b1, z.a, z.Ca, z.Sa, x, count,
       [&](const Atoms& atoms, double* value) {
@@ -197,7 +196,8 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
     for (std::size_t v = 0; v < group_vectors; ++v) b[v] = broadcast(0.0), d[v] = broadcast(0.0);
     const auto step = [&](int j, bool on_fma) {
       const Vector c = broadcast(z.legendre[z.n - 1 - j]);
-      for (std::size_t v = 0; v < group_vectors; ++v) {  // d_j = c_j + d_{j+1} - 2 Sx b_{j+1}, one rounding for the product
+      for (std::size_t v = 0; v < group_vectors;
+           ++v) {  // d_j = c_j + d_{j+1} - 2 Sx b_{j+1}, one rounding for the product
         const Vector sum_cd = on_fma ? product_plus(d[v], one, c) : add(c, d[v]);
         const Vector d_j = minus_product_plus(b[v], load(two_Sx + start + v * lanes), sum_cd);
         b[v] = add(b[v], d_j);
@@ -210,9 +210,11 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
     for (std::size_t v = 0; v < group_vectors; ++v) store(sum + start + v * lanes, d[v]);
   };
   std::size_t start = 0;
-  for (; start + vectors * lanes <= block; start += vectors * lanes) group(start, std::integral_constant<std::size_t, vectors>{});
+  for (; start + vectors * lanes <= block; start += vectors * lanes)
+    group(start, std::integral_constant<std::size_t, vectors>{});
   if constexpr (block % (vectors * lanes) != 0) {
-    for (; start < block; start += tail_vectors * lanes) group(start, std::integral_constant<std::size_t, tail_vectors>{});
+    for (; start < block; start += tail_vectors * lanes)
+      group(start, std::integral_constant<std::size_t, tail_vectors>{});
   }
   for (std::size_t k = 0; k < block; ++k) {  // 1 + cos x^ = 2 - Sx, in [1, 2] in the zone
     value[k] = z.scale * std::sqrt((2 - atoms.Sx[k]) * atoms.D[k]) * sum[k];
@@ -232,8 +234,7 @@ bool all_finite_kernel(const double* x, std::size_t count) {
   return non_finite == 0;
 }
 
-void pressure_kernel(const WavinessZone& z, Form form, const double* x, double* p,
-                     std::size_t count) {
+void pressure_kernel(const WavinessZone& z, Form form, const double* x, double* p, std::size_t count) {
   const double E = z.E, H1 = z.H1, b1 = z.b1, m = z.m, Ca = z.Ca, Sa = z.Sa;  // not aliased by p
   if (form == Form::exact) {
     waviness_blocks(z, x, p, count, [=](double Cx, double Sx, double D) {

@@ -79,13 +79,11 @@ void register_profile(const ProfileEvaluator& evaluator) {
       b.beta == 0 || (b.beta > 0 && std::isfinite(b.beta) && b.cosine > -1 && b.cosine < 1 && b.load &&
                       b.load_near_branch && b.top_piece_argument && b.load_slope_factor &&
                       b.load_slope_factor_by_parts && b.top_g && b.flank_g && b.flank_height && b.flank_height_slope &&
-                      branch_pressure_complete(b) &&
-                      b.flank_pole_squares && b.flank_pole_count >= 0);
-  if (evaluator.name.empty() || !evaluator.pressure || !evaluator.load ||
-      !evaluator.load_slope_factor || !evaluator.height || !evaluator.height_slope ||
-      !evaluator.pole_squares || evaluator.pole_count < 0 || evaluator.harmonic < 0 || !branch_complete) {
-    throw std::invalid_argument("wavecontact::register_profile: incomplete evaluator \"" +
-                                evaluator.name + "\"");
+                      branch_pressure_complete(b) && b.flank_pole_squares && b.flank_pole_count >= 0);
+  if (evaluator.name.empty() || !evaluator.pressure || !evaluator.load || !evaluator.load_slope_factor ||
+      !evaluator.height || !evaluator.height_slope || !evaluator.pole_squares || evaluator.pole_count < 0 ||
+      evaluator.harmonic < 0 || !branch_complete) {
+    throw std::invalid_argument("wavecontact::register_profile: incomplete evaluator \"" + evaluator.name + "\"");
   }
   const std::lock_guard<std::mutex> lock(registry_mutex);
   registry()[evaluator.name] = evaluator;
@@ -99,8 +97,8 @@ ProfileEvaluator profile_evaluator(const std::string& name) {
   }
   throw std::domain_error("wavecontact::profile_evaluator: no profile \"" + name +
                           "\" (available: " + joined(available_profiles()) +
-                          "); generate one with wavecontact-derive --profile EXPR --name " +
-                          name + " and register it with wavecontact::register_profile()");
+                          "); generate one with wavecontact-derive --profile EXPR --name " + name +
+                          " and register it with wavecontact::register_profile()");
 }
 
 std::vector<std::string> available_profiles() {
@@ -110,8 +108,7 @@ std::vector<std::string> available_profiles() {
   return names;
 }
 
-Profile::Profile(const ProfileParams& params)
-    : params_(params), evaluator_(profile_evaluator(params.name)) {
+Profile::Profile(const ProfileParams& params) : params_(params), evaluator_(profile_evaluator(params.name)) {
   constexpr const char* function = "wavecontact::Profile";
   detail::require_positive(function, "b1", params.b1);
   detail::require_positive(function, "E", params.E);
@@ -119,17 +116,15 @@ Profile::Profile(const ProfileParams& params)
     bool known = false;
     for (const auto& p : evaluator_.parameters) known = known || p == name;
     if (!known) {
-      throw std::domain_error(std::string(function) + ": profile " + params.name +
-                              " has no parameter \"" + name + "\" (its parameters: " +
-                              joined(evaluator_.parameters) + ")");
+      throw std::domain_error(std::string(function) + ": profile " + params.name + " has no parameter \"" + name +
+                              "\" (its parameters: " + joined(evaluator_.parameters) + ")");
     }
   }
   for (const auto& name : evaluator_.parameters) {
     const auto it = params.parameters.find(name);
     if (it == params.parameters.end()) {
-      throw std::domain_error(std::string(function) + ": profile " + params.name +
-                              " needs the parameter \"" + name + "\" (its parameters: " +
-                              joined(evaluator_.parameters) + ")");
+      throw std::domain_error(std::string(function) + ": profile " + params.name + " needs the parameter \"" + name +
+                              "\" (its parameters: " + joined(evaluator_.parameters) + ")");
     }
     detail::require_finite(function, name.c_str(), it->second);
     q_.push_back(it->second);
@@ -161,9 +156,7 @@ Profile::Profile(const ProfileParams& params)
   for (double t : flank) bound(t, t >= beta_square);
 }
 
-bool Profile::beyond_branch(double Ca) const {
-  return evaluator_.branch.beta > 0 && Ca < evaluator_.branch.cosine;
-}
+bool Profile::beyond_branch(double Ca) const { return evaluator_.branch.beta > 0 && Ca < evaluator_.branch.cosine; }
 
 void Profile::check_half_width(const char* function, double a, bool closed) const {
   const bool full = closed && reach_ == params_.b1;
@@ -191,8 +184,7 @@ double Profile::pressure(double a, double x) const {
         .pressure(point, g_own == 0 ? 0.0 : g_other / g_own,  // g = 0 at x = 0 only
                   point.Cx == b.cosine);
   }
-  return evaluator_.pressure(q_.data(), params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx,
-                             point.Sx, point.D);
+  return evaluator_.pressure(q_.data(), params_.E, params_.b1, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
 }
 
 double Profile::load(double a) const {
@@ -201,7 +193,7 @@ double Profile::load(double a) const {
   const ZoneAngles zone = zone_angles(a, params_.b1);
   const BranchEvaluators& b = evaluator_.branch;
   const double* q = q_.data();
-  const double P = !beyond_branch(zone.Ca)                                 ? evaluator_.load(q, params_.E, zone.Ca, zone.Sa)
+  const double P = !beyond_branch(zone.Ca)                          ? evaluator_.load(q, params_.E, zone.Ca, zone.Sa)
                    : b.top_piece_argument(q, zone.Ca, zone.Sa) >= 1 ? b.load_near_branch(q, params_.E, zone.Ca, zone.Sa)
                                                                     : b.load(q, params_.E, zone.Ca, zone.Sa);
   if (!std::isfinite(P)) {
@@ -231,8 +223,8 @@ double Profile::full_contact_pressure(double P, double x) const {
                             " has no closed form of full contact (its evaluators were registered without one)");
   }
   if (reach_ < params_.b1) {
-    throw std::domain_error(std::string(function) + ": profile " + params_.name + " has a pole at x = " +
-                            detail::format(reach_) + " of the period: no full contact");
+    throw std::domain_error(std::string(function) + ": profile " + params_.name +
+                            " has a pole at x = " + detail::format(reach_) + " of the period: no full contact");
   }
   if (!(std::isfinite(P) && P >= 0)) detail::domain_error(function, "P", P, "a finite load P >= 0");
   detail::require_finite(function, "x", x);

@@ -42,8 +42,7 @@ PressureUniformity pressure_uniformity(double m, double ratio) {
   const double a = stable_half_width(params, P);
   if (a == 0) {
     detail::domain_error(function, "pa/p*", ratio,
-                         "a load that one stable, admissible contact zone carries at m = " +
-                             detail::format(m));
+                         "a load that one stable, admissible contact zone carries at m = " + detail::format(m));
   }
   // p is even in x: the maximum over [0, a), located on a grid, then refined.
   const auto p = [&](double x) { return pressure(params, a, x); };
@@ -54,8 +53,7 @@ PressureUniformity pressure_uniformity(double m, double ratio) {
     if (value > best_p) best = i, best_p = value;
   }
   const double lo = a * std::max(best - 1, 0) / scan_points, hi = a * (best + 1) / scan_points;
-  const auto [x_max, minus_p] =
-      boost::math::tools::brent_find_minima([&](double x) { return -p(x); }, lo, hi, 40);
+  const auto [x_max, minus_p] = boost::math::tools::brent_find_minima([&](double x) { return -p(x); }, lo, hi, 40);
   const double maximum = std::max(best_p, -minus_p);
   const double x_of_max = -minus_p > best_p ? x_max : a * best / scan_points;
   return {m, a / params.b1, maximum / (P / (2 * a)), x_of_max / a};
@@ -82,7 +80,8 @@ PressureUniformity most_uniform_shape(double ratio, double m_max) {
   if (!std::isfinite(best_value)) {
     detail::domain_error(function, "pa/p*", ratio,
                          "a load that one stable, admissible contact zone carries for some "
-                         "0 <= m <= " + detail::format(m_max));
+                         "0 <= m <= " +
+                             detail::format(m_max));
   }
   const double lo = t_max * std::max(best - 1, 0) / start_shapes;
   const double hi = t_max * std::min(best + 1, start_shapes) / start_shapes;

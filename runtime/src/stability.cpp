@@ -30,8 +30,8 @@ double bracketed_root(const F& f, double lo, double hi, double f_lo, double f_hi
   if (f_lo == 0) return lo;
   if (f_hi == 0) return hi;
   std::uintmax_t iterations = 200;
-  const auto [left, right] = boost::math::tools::toms748_solve(
-      f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(), iterations);
+  const auto [left, right] =
+      boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(), iterations);
   return left + (right - left) / 2;
 }
 
@@ -78,12 +78,11 @@ double unique_half_width(const char* function, const LoadCurve& curve, double P)
   if (solutions.size() > 1) {
     std::string list;
     for (const Equilibrium& e : solutions) {
-      list += (list.empty() ? "" : ", ") + detail::format(e.a) +
-              (e.stable ? " (stable)" : " (unstable)");
+      list += (list.empty() ? "" : ", ") + detail::format(e.a) + (e.stable ? " (stable)" : " (unstable)");
     }
     detail::domain_error(function, "P", P,
-                         "a load carried by one half-width only; this one is carried by a = " +
-                             list + ": use wavecontact::LoadCurve::equilibria()");
+                         "a load carried by one half-width only; this one is carried by a = " + list +
+                             ": use wavecontact::LoadCurve::equilibria()");
   }
   return solutions.front().a;
 }
@@ -135,9 +134,8 @@ LoadCurve::LoadCurve(const Profile& profile)
       // Short of a pole, where the load grows without bound.
       end_(profile.reach() < profile.params().b1 ? profile.reach() * (1 - 1e-9) : profile.reach()) {
   // dP/da = (pi/b1) sin(pi a/b1) F(a) vanishes at a = b1 through the sine: step back from it.
-  locate_turning_points([&profile, end = end_](double r) {
-    return profile.load_slope(r < 1 ? r * end : end * (1 - 1e-9));
-  });
+  locate_turning_points(
+      [&profile, end = end_](double r) { return profile.load_slope(r < 1 ? r * end : end * (1 - 1e-9)); });
 }
 
 void LoadCurve::locate_turning_points(const std::function<double(double)>& slope) {
@@ -152,8 +150,7 @@ void LoadCurve::locate_turning_points(const std::function<double(double)>& slope
       roots.push_back(bracketed_root(slope, r[i], r[i + 1], f[i], f[i + 1]));
     } else if (f[i] > 0 && i + 1 < slope_samples && f[i] <= f[i - 1] && f[i] <= f[i + 1]) {
       // A positive local minimum on the grid may hide a short dip below zero.
-      const auto [r_min, f_min] =
-          boost::math::tools::brent_find_minima(slope, r[i - 1], r[i + 1], 52);
+      const auto [r_min, f_min] = boost::math::tools::brent_find_minima(slope, r[i - 1], r[i + 1], 52);
       if (f_min < 0) {
         roots.push_back(bracketed_root(slope, r[i - 1], r_min, f[i - 1], f_min));
         roots.push_back(bracketed_root(slope, r_min, r[i + 1], f_min, f[i + 1]));
@@ -180,8 +177,8 @@ std::vector<Equilibrium> LoadCurve::equilibria(double P) const {
   const double lowest = load_(min_half_width_ratio * b1_);
   if (!(std::isfinite(P) && P >= lowest)) {
     detail::domain_error(function, "P", P,
-                         "P >= " + detail::format(lowest) + ", the load of the narrowest zone a = " +
-                             detail::format(min_half_width_ratio) + " b1");
+                         "P >= " + detail::format(lowest) +
+                             ", the load of the narrowest zone a = " + detail::format(min_half_width_ratio) + " b1");
   }
   std::vector<Equilibrium> result;
   for (std::size_t i = 1; i < turning_points_.size(); ++i) {

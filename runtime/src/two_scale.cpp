@@ -57,20 +57,19 @@ void validate(const RoughnessParams& r, const char* function) {
   detail::require_scale(function, "H2", r.H2, true);
   if (r.n < 2 || r.n % 2 != 0 || r.n > max_roughness_n) {
     detail::domain_error(function, "n", r.n,
-                         "an even integer, 2 <= n <= " + std::to_string(max_roughness_n) +
-                             " (wavelength ratio b1/b2)");
+                         "an even integer, 2 <= n <= " + std::to_string(max_roughness_n) + " (wavelength ratio b1/b2)");
   }
 }
 
 void register_roughness_evaluator(const RoughnessEvaluator& evaluator) {
   validate(RoughnessParams{0, evaluator.n}, "wavecontact::register_roughness_evaluator");
-  for (const auto& [name, missing] : {std::pair{"pressure", evaluator.pressure == nullptr},
-                                       std::pair{"load", evaluator.load == nullptr},
-                                       std::pair{"legendre", evaluator.legendre == nullptr}}) {
+  for (const auto& [name, missing] :
+       {std::pair{"pressure", evaluator.pressure == nullptr}, std::pair{"load", evaluator.load == nullptr},
+        std::pair{"legendre", evaluator.legendre == nullptr}}) {
     if (missing) {
       throw std::invalid_argument(std::string("wavecontact::register_roughness_evaluator: ") + name +
-                                  " is null for n = " + std::to_string(evaluator.n) +
-                                  " (pass &roughness_n<N>_" + name + "<double> of the generated header)");
+                                  " is null for n = " + std::to_string(evaluator.n) + " (pass &roughness_n<N>_" + name +
+                                  "<double> of the generated header)");
     }
   }
   const std::lock_guard<std::mutex> lock(registry_mutex);
@@ -86,8 +85,8 @@ RoughnessEvaluator roughness_evaluator(int n) {
     const std::string N = std::to_string(n);
     detail::domain_error(function, "n", n,
                          "a generated n; generate this one with `wavecontact-derive --n " + N +
-                             " --out DIR` or the CMake call wavecontact_generate(TARGET <target> N " +
-                             N + "), then register_roughness_evaluator()");
+                             " --out DIR` or the CMake call wavecontact_generate(TARGET <target> N " + N +
+                             "), then register_roughness_evaluator()");
   }
   return it->second;
 }
@@ -186,8 +185,7 @@ double TwoScaleContact::roughness_pressure(double x) const {
   const int n = params_.roughness.n;
   const double EH2 = w.E * params_.roughness.H2;
   if (form_ == Form::exact) {
-    return evaluator_.pressure(w.E, params_.roughness.H2, w.b1, zone_.Ca, zone_.Sa, point.Cx,
-                               point.Sx, point.D);
+    return evaluator_.pressure(w.E, params_.roughness.H2, w.b1, zone_.Ca, zone_.Sa, point.Cx, point.Sx, point.D);
   }
   // Eq. 20: (E* H2 n^2/2) sqrt(alpha^2 - u^2) sum_j k_j z^j, z = cos(a^/2) cos^2(x^/2);
   // 1 - z = 2 sin^2(a^/4) + cos(a^/2) sin^2(x^/2).
@@ -205,18 +203,18 @@ void TwoScaleContact::add_roughness_pressure(const Eigen::Ref<const Eigen::Array
   const WavinessParams& w = params_.waviness;
   const bool simd = form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_pressure_available();
   const int n = params_.roughness.n;
-  const detail::RoughnessZone zone{w.b1, a_, zone_.Ca, zone_.Sa,
-                                   pi / w.b1 * w.E * params_.roughness.H2 * n / 2, legendre_.data(), n};
+  const detail::RoughnessZone zone{
+      w.b1, a_, zone_.Ca, zone_.Sa, pi / w.b1 * w.E * params_.roughness.H2 * n / 2, legendre_.data(), n};
   const double* xs = x.data();
   double* ps = p.data();
   detail::for_each_chunk(static_cast<std::size_t>(x.size()), detail::simd_block, parallel_points,
                          [&](std::size_t begin, std::size_t end) {
-    if (simd) {
-      detail::simd_add_roughness_pressure(zone, xs + begin, ps + begin, end - begin);
-    } else {
-      for (std::size_t i = begin; i < end; ++i) ps[i] += roughness_pressure(xs[i]);
-    }
-  });
+                           if (simd) {
+                             detail::simd_add_roughness_pressure(zone, xs + begin, ps + begin, end - begin);
+                           } else {
+                             for (std::size_t i = begin; i < end; ++i) ps[i] += roughness_pressure(xs[i]);
+                           }
+                         });
 }
 
 void TwoScaleContact::roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
@@ -244,8 +242,7 @@ double TwoScaleContact::pressure(double x) const {
   return waviness_pressure(x) + roughness_pressure(x);
 }
 
-void TwoScaleContact::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
-                               Eigen::Ref<Eigen::ArrayXd> p) const {
+void TwoScaleContact::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const {
   constexpr const char* function = "wavecontact::TwoScaleContact::pressure";
   require_admissible(function);
   detail::require_points(function, x, p.size());
@@ -273,15 +270,14 @@ std::vector<Equilibrium> two_scale_half_widths(const TwoScaleParams& params, dou
   const RoughnessEvaluator evaluator = roughness_evaluator(params.roughness.n);
   auto residual = [&](double a) {
     const ZoneAngles zone = zone_angles(a, b1);
-    return load(params.waviness, a) +
-           evaluator.load(params.waviness.E, params.roughness.H2, zone.Ca, zone.Sa) - P;
+    return load(params.waviness, a) + evaluator.load(params.waviness.E, params.roughness.H2, zone.Ca, zone.Sa) - P;
   };
   // The load of the narrowest zone the half-widths allow (parameters.hpp).
   const double lowest = residual(min_half_width_ratio * b1) + P;
   if (!(P >= lowest)) {
     detail::domain_error(function, "P", P,
-                         "P >= " + detail::format(lowest) + ", the load of the narrowest zone a = " +
-                             detail::format(min_half_width_ratio) + " b1");
+                         "P >= " + detail::format(lowest) +
+                             ", the load of the narrowest zone a = " + detail::format(min_half_width_ratio) + " b1");
   }
   auto equilibrium = [&](double a, bool rising) {
     return Equilibrium{a, rising, TwoScaleContact(params, a).admissible()};

@@ -24,8 +24,8 @@ inline std::string format(double value) {
 
 [[noreturn]] inline void domain_error(const char* function, const char* parameter, double value,
                                       const std::string& valid) {
-  throw std::domain_error(std::string(function) + ": " + parameter + " = " + format(value) + " is invalid (valid: " +
-                          valid + ")");
+  throw std::domain_error(std::string(function) + ": " + parameter + " = " + format(value) +
+                          " is invalid (valid: " + valid + ")");
 }
 
 inline void require_finite(const char* function, const char* parameter, double value) {
@@ -41,9 +41,9 @@ inline void require_positive(const char* function, const char* parameter, double
 inline void require_scale(const char* function, const char* parameter, double value, bool zero_allowed = false) {
   if (zero_allowed && value == 0) return;
   if (!(std::isfinite(value) && value >= min_scale && value <= max_scale)) {
-    domain_error(function, parameter, value,
-                 std::string(zero_allowed ? "0 or " : "") + format(min_scale) + " <= " + parameter + " <= " +
-                     format(max_scale));
+    domain_error(
+        function, parameter, value,
+        std::string(zero_allowed ? "0 or " : "") + format(min_scale) + " <= " + parameter + " <= " + format(max_scale));
   }
 }
 
@@ -53,8 +53,9 @@ inline void require_half_width(const char* function, double a, double b1, double
                                const std::string& upper_text) {
   const double lowest = min_half_width_ratio * b1;
   if (!(std::isfinite(a) && a >= lowest && (a < upper || (closed && a == upper)))) {
-    domain_error(function, "a", a, format(lowest) + " = " + format(min_half_width_ratio) + " b1 <= a " +
-                                       (closed ? "<= " : "< ") + upper_text);
+    domain_error(
+        function, "a", a,
+        format(lowest) + " = " + format(min_half_width_ratio) + " b1 <= a " + (closed ? "<= " : "< ") + upper_text);
   }
 }
 

@@ -40,24 +40,19 @@ void require_half_width(const char* function, const WavinessParams& p, double a,
   }
 }
 
-double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x,
-                   Form form) {
+double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x, Form form) {
   const double r = std::fabs(reduce_to_period(x, p.b1));
   if (r >= a) return 0;
   const PointAngles point = point_angles(r, a, p.b1);
   if (form == Form::exact && a > p.b1 / 2) return detail::pressure_beyond_half(p, zone, point);
   return form == Form::exact
-             ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa,
-                                                  point.Cx, point.Sx, point.D)
-             : generated::waviness_pressure_paper(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa,
-                                                  point.Cx, point.Sx, point.D);
+             ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D)
+             : generated::waviness_pressure_paper(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
 }
 
 // Beyond b1/2 the exact form is the closed forms with J_{j,l} atoms, with the zone's atoms kept
 // (detail::BeyondHalfZone; no SIMD kernel); the printed one continues its closed form.
-bool beyond_half_exact(const WavinessParams& p, double a, Form form) {
-  return form == Form::exact && a > p.b1 / 2;
-}
+bool beyond_half_exact(const WavinessParams& p, double a, Form form) { return form == Form::exact && a > p.b1 / 2; }
 
 }  // namespace
 
@@ -100,8 +95,7 @@ void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eig
   if (!finite) detail::require_finite_points(function, x);
 }
 
-Eigen::ArrayXd pressure(const WavinessParams& params, double a,
-                        const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
+Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
   Eigen::ArrayXd p(x.size());
   pressure(params, a, x, p, form);
   return p;
@@ -111,8 +105,7 @@ namespace detail {
 
 bool simd_pressure_available() { return array_kernel_isa() != Isa::scalar; }
 
-void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p,
-                   std::size_t count) {
+void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p, std::size_t count) {
   if (array_kernel_isa() == Isa::avx512) return avx512::simd_pressure(zone, form, x, p, count);
   avx2::simd_pressure(zone, form, x, p, count);
 }
@@ -123,8 +116,7 @@ void simd_point_angles(double b1, double a, const double* x, std::size_t count, 
   avx2::simd_point_angles(b1, a, x, count, angles, inside);
 }
 
-void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p,
-                                 std::size_t count) {
+void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count) {
   if (array_kernel_isa() == Isa::avx512) return avx512::simd_add_roughness_pressure(zone, x, p, count);
   avx2::simd_add_roughness_pressure(zone, x, p, count);
 }
@@ -205,9 +197,7 @@ double pstar(const WavinessParams& params) {
   return pi * params.E * params.H1 / (2 * params.b1);
 }
 
-double mean_pressure(const WavinessParams& params, double a) {
-  return load(params, a) / (2 * params.b1);
-}
+double mean_pressure(const WavinessParams& params, double a) { return load(params, a) / (2 * params.b1); }
 
 double contact_fraction(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::contact_fraction";
@@ -229,20 +219,18 @@ double single_asperity_half_width(const WavinessParams& params, double P) {
   const double slack = 8 * std::numeric_limits<double>::epsilon() * maximum;
   if (!(std::isfinite(ratio) && ratio > 0 && ratio <= maximum + slack)) {
     detail::domain_error(function, "P", P,
-                         "0 < P <= " + detail::format(maximum * pi * params.E * params.H1) +
-                             " (the load at a = b1/2)");
+                         "0 < P <= " + detail::format(maximum * pi * params.E * params.H1) + " (the load at a = b1/2)");
   }
   if (ratio >= maximum) return params.b1 / 2;
   const auto residual = [&](double Sa) {
     const double Ca = 1 - Sa;
-    return std::make_pair(ratio_at(Sa) - ratio,
-                          generated::waviness_load_slope_factor(1.0, 1.0, m, Ca, Sa) / pi);
+    return std::make_pair(ratio_at(Sa) - ratio, generated::waviness_load_slope_factor(1.0, 1.0, m, Ca, Sa) / pi);
   };
   // Start from the small-zone limit pa/p* ~ Sa/(2 (1 + m)) of the closed form.
   const double start = std::min(2 * (1 + m) * ratio, 1.0);
   std::uintmax_t iterations = 100;
-  const double Sa = boost::math::tools::newton_raphson_iterate(
-      residual, start, 0.0, 1.0, std::numeric_limits<double>::digits, iterations);
+  const double Sa = boost::math::tools::newton_raphson_iterate(residual, start, 0.0, 1.0,
+                                                               std::numeric_limits<double>::digits, iterations);
   // a^ = 2 asin(sqrt(Sa/2)) keeps its digits for small zones, where acos(1 - Sa) would not.
   return params.b1 * 2 * std::asin(std::sqrt(Sa / 2)) / pi;
 }

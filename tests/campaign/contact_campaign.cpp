@@ -58,7 +58,8 @@ Sweep draw(const Settings& s, int k) {
   // flat punch's (large m) about 1 + m times that, and each harmonic adds its slope's share.
   const double pstar_load = M_PI * E * H1;
   const double bottom = 0.01 * pstar_load, top = 2 * pstar_load * (1 + w.m + slopes / H1);
-  for (int i = 0; i < s.loads; ++i) w.loads.push_back(bottom * std::pow(top / bottom, static_cast<double>(i) / (s.loads - 1)));
+  for (int i = 0; i < s.loads; ++i)
+    w.loads.push_back(bottom * std::pow(top / bottom, static_cast<double>(i) / (s.loads - 1)));
   return w;
 }
 
@@ -82,12 +83,18 @@ int main(int argc, char** argv) {
   Settings s;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--seed") s.seed = static_cast<unsigned>(std::stoul(value));
-    else if (key == "--sweeps") s.sweeps = std::stoi(value);
-    else if (key == "--first") s.first = std::stoi(value);
-    else if (key == "--max-n") s.max_n = std::stoi(value);
-    else if (key == "--loads") s.loads = std::stoi(value);
-    else if (key == "--tolerance") s.tolerance = std::stod(value);
+    if (key == "--seed")
+      s.seed = static_cast<unsigned>(std::stoul(value));
+    else if (key == "--sweeps")
+      s.sweeps = std::stoi(value);
+    else if (key == "--first")
+      s.first = std::stoi(value);
+    else if (key == "--max-n")
+      s.max_n = std::stoi(value);
+    else if (key == "--loads")
+      s.loads = std::stoi(value);
+    else if (key == "--tolerance")
+      s.tolerance = std::stod(value);
     else {
       std::fprintf(stderr, "contact_campaign: unknown option %s\n", key.c_str());
       return 2;
@@ -106,9 +113,9 @@ int main(int argc, char** argv) {
     }
     const auto start = std::chrono::steady_clock::now();
     try {
-      const std::vector<wavecontact::Contact> sweep = wavecontact::solve_contact(
-          wavecontact::Surface(wavecontact::WavinessParams{H1, b1, w.m, E}, w.harmonics), w.loads,
-          wavecontact::SolverOptions(s.tolerance));
+      const std::vector<wavecontact::Contact> sweep =
+          wavecontact::solve_contact(wavecontact::Surface(wavecontact::WavinessParams{H1, b1, w.m, E}, w.harmonics),
+                                     w.loads, wavecontact::SolverOptions(s.tolerance));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       slowest = std::max(slowest, seconds), total += seconds;
       int zones = 0, bad = 0;
@@ -135,8 +142,9 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
   }
-  std::printf("campaign seed %u, sweeps %d..%d: %d stalls, %d violations, %d of %d contacts above the tolerance, "
-              "up to %d zones, %.1f s in all, slowest sweep %.2f s\n",
-              s.seed, s.first, s.first + s.sweeps - 1, stalls, violations, missed, contacts, most_zones, total, slowest);
+  std::printf(
+      "campaign seed %u, sweeps %d..%d: %d stalls, %d violations, %d of %d contacts above the tolerance, "
+      "up to %d zones, %.1f s in all, slowest sweep %.2f s\n",
+      s.seed, s.first, s.first + s.sweeps - 1, stalls, violations, missed, contacts, most_zones, total, slowest);
   return stalls == 0 && violations == 0 ? 0 : 1;
 }

@@ -26,8 +26,9 @@ double bump_deviation() {
   const wavecontact::Profile profile({"bump", {{"H", H}, {"c", c}}, b1, E});
   const auto g = [&](double v) {
     const double x = 2 * std::atan(v), d = 2 - std::cos(x);
-    const double dy = H * ((-std::sin(x) - 2 * c * std::sin(2 * x)) * d -
-                           (std::cos(x) + c * std::cos(2 * x)) * std::sin(x)) / (d * d);
+    const double dy =
+        H * ((-std::sin(x) - 2 * c * std::sin(2 * x)) * d - (std::cos(x) + c * std::cos(2 * x)) * std::sin(x)) /
+        (d * d);
     return -E / 2 * dy;
   };
   const double alpha = std::tan(pi * a / (2 * b1));
@@ -78,8 +79,7 @@ int main() {
     worst = std::fmax(worst, std::fabs(contact.roughness_pressure(xs[i]) - numerical) / scale);
     worst = std::fmax(worst, std::fabs(array_path[i] - numerical) / scale);
   }
-  std::printf("n = 96: max |generated (point and array) - numerical inversion| / (E* H2 n pi/b1) = %.3g\n",
-              worst);
+  std::printf("n = 96: max |generated (point and array) - numerical inversion| / (E* H2 n pi/b1) = %.3g\n", worst);
   const double bump = bump_deviation();
   std::printf("profile bump: max |generated - numerical inversion| / max |p| = %.3g\n", bump);
   return worst <= 1e-12 && bump <= 1e-12 ? 0 : 1;

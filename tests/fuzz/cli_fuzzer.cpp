@@ -36,14 +36,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   namespace status_of = wavecontact::exit_status;
   std::ostringstream out, err;
   const auto start = std::chrono::steady_clock::now();
-  const int status =
-      wavecontact::cli::run(static_cast<int>(argv.size()), argv.data(), out, err, false);
+  const int status = wavecontact::cli::run(static_cast<int>(argv.size()), argv.data(), out, err, false);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // The loads of the run: each has the default budget of 60 s.
   std::size_t loads = 1;
   for (std::size_t i = 1; i + 1 < arguments.size(); ++i) {
     if (arguments[i] == "--P" || arguments[i] == "--pa-over-pstar") {
-      loads = std::max<std::size_t>(loads, 1 + static_cast<std::size_t>(std::count(arguments[i + 1].begin(), arguments[i + 1].end(), ',')));
+      loads = std::max<std::size_t>(
+          loads, 1 + static_cast<std::size_t>(std::count(arguments[i + 1].begin(), arguments[i + 1].end(), ',')));
     }
   }
   if (seconds > 75.0 * static_cast<double>(loads)) std::abort();  // beyond the default budget
@@ -54,8 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (status != status_of::success) {
     const std::string message = err.str();
-    if (!out.str().empty() || message.empty() || message.back() != '\n' ||
-        message.find('\n') != message.size() - 1) {
+    if (!out.str().empty() || message.empty() || message.back() != '\n' || message.find('\n') != message.size() - 1) {
       std::abort();
     }
   }

@@ -51,8 +51,8 @@ bool derivable(const derive::ProfileSpec& spec) {
   table["Pi"] = GiNaC::Pi;
   for (const auto& p : spec.parameters) table[p.name] = GiNaC::realsymbol(p.name);
   try {
-    const derive::ProfileOrder order = derive::checked_order(
-        derive::parse_bounded_expression(spec.expression, table), derive::sym::x());
+    const derive::ProfileOrder order =
+        derive::checked_order(derive::parse_bounded_expression(spec.expression, table), derive::sym::x());
     if (spec.parameters.size() > fuzzed_parameters) return false;
     const long limit = spec.expression.find("abs") == std::string::npos ? fuzzed_order : fuzzed_branched_order;
     if (order.denominator == 0 && limit == fuzzed_order) return order.numerator <= fuzzed_cosine_sum_order;
@@ -69,9 +69,17 @@ void require_compiles(const std::string& header) {
   fs::create_directories(dir);
   std::ofstream(dir / "profile_fuzz.hpp") << header;
   std::ofstream(dir / "main.cpp") << "#include \"profile_fuzz.hpp\"\n";
-  std::vector<std::string> words{WAVECONTACT_FUZZ_CXX, "-std=c++17", "-fsyntax-only", "-Wall", "-Wextra",
-                                 "-Werror", "-pedantic", "-I" WAVECONTACT_RUNTIME_INCLUDE,
-                                 "-I" WAVECONTACT_GENERATED_DIR, "-I" + dir.string(), (dir / "main.cpp").string()};
+  std::vector<std::string> words{WAVECONTACT_FUZZ_CXX,
+                                 "-std=c++17",
+                                 "-fsyntax-only",
+                                 "-Wall",
+                                 "-Wextra",
+                                 "-Werror",
+                                 "-pedantic",
+                                 "-I" WAVECONTACT_RUNTIME_INCLUDE,
+                                 "-I" WAVECONTACT_GENERATED_DIR,
+                                 "-I" + dir.string(),
+                                 (dir / "main.cpp").string()};
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);

@@ -152,7 +152,7 @@ double full_contact_load(const Surface& surface);
 // p >= 0 on it and gap >= 0 off it (0 < a < b1).
 struct SingleZoneCheck {
   bool solution;
-  bool penetrates;  // the gap is below -1e-9 of the height range off the zone
+  bool penetrates;                               // the gap is below -1e-9 of the height range off the zone
   double lowest_gap, x_of_lowest_gap;            // [length], x >= 0; lowest_gap < 0: penetration
   double lowest_pressure, x_of_lowest_pressure;  // [pressure]
 };

@@ -43,8 +43,8 @@ struct Clenshaw {
 };
 
 template <typename Scalar, typename Coefficient, typename Visit>
-Clenshaw<Scalar> clenshaw_reinsch(const Coefficient& coefficient, int count, const Scalar& x,
-                                  const Scalar& Sx, const Visit& visit) {
+Clenshaw<Scalar> clenshaw_reinsch(const Coefficient& coefficient, int count, const Scalar& x, const Scalar& Sx,
+                                  const Visit& visit) {
   Clenshaw<Scalar> c;
   c.upper = x >= 0;
   const Scalar twice_gap = c.upper ? Scalar(-2 * Sx) : Scalar(2 * (Scalar(1) + x));
@@ -62,8 +62,7 @@ Clenshaw<Scalar> clenshaw_reinsch(const Coefficient& coefficient, int count, con
 }
 
 template <typename Scalar, typename Coefficient>
-Clenshaw<Scalar> clenshaw_reinsch(const Coefficient& coefficient, int count, const Scalar& x,
-                                  const Scalar& Sx) {
+Clenshaw<Scalar> clenshaw_reinsch(const Coefficient& coefficient, int count, const Scalar& x, const Scalar& Sx) {
   return clenshaw_reinsch(coefficient, count, x, Sx, [](int, const Scalar&) {});
 }
 
@@ -74,9 +73,8 @@ Clenshaw<Scalar> clenshaw_reinsch(const Coefficient& coefficient, int count, con
 //   sum_j B_j V_j(Cx) = sum_{m<K} P_m(Ca) (b_m - b_{m+1}),  b_m = sum_{i>=0} c_{m+1+i} U_i(Cx),
 // c_k = k A_k, the b_m by Clenshaw's recurrence (Reinsch's form): O(K) a point.
 template <typename Scalar>
-Scalar harmonic_series_pressure(const Scalar* A, int K, Scalar* work, const Scalar& E,
-                                const Scalar& b1, const Scalar& Ca, const Scalar& Cx,
-                                const Scalar& Sx, const Scalar& D) {
+Scalar harmonic_series_pressure(const Scalar* A, int K, Scalar* work, const Scalar& E, const Scalar& b1,
+                                const Scalar& Ca, const Scalar& Cx, const Scalar& Sx, const Scalar& D) {
   using std::sqrt;
   Scalar* P = work;
   detail::legendre_values(Ca, K, P);
@@ -90,8 +88,7 @@ Scalar harmonic_series_pressure(const Scalar* A, int K, Scalar* work, const Scal
 // The load per unit length P (eq. 6); the differences P_{k-1} - P_k by
 // D_{k+1} = (k D_k + (2k+1) Sa P_k)/(k+1), D_1 = Sa, free of cancellation near Ca = 1.
 template <typename Scalar>
-Scalar harmonic_series_load(const Scalar* A, int K, Scalar* work, const Scalar& E,
-                            const Scalar& Ca, const Scalar& Sa) {
+Scalar harmonic_series_load(const Scalar* A, int K, Scalar* work, const Scalar& E, const Scalar& Ca, const Scalar& Sa) {
   Scalar* P = work;
   detail::legendre_values(Ca, K, P);
   Scalar sum = 0, difference = Sa;  // D_k = P_{k-1} - P_k, k = 1
@@ -108,8 +105,7 @@ Scalar harmonic_series_load(const Scalar* A, int K, Scalar* work, const Scalar& 
 // dP/dSa - dP/dCa: dP/da = (pi/b1) sin(a^) times this; P'_k - P'_{k-1} by
 // F_{k+1} = (2k+1) P_k - F_k, F_1 = 1.
 template <typename Scalar>
-Scalar harmonic_series_load_slope_factor(const Scalar* A, int K, Scalar* work, const Scalar& E,
-                                         const Scalar& Ca) {
+Scalar harmonic_series_load_slope_factor(const Scalar* A, int K, Scalar* work, const Scalar& E, const Scalar& Ca) {
   Scalar* P = work;
   detail::legendre_values(Ca, K, P);
   Scalar sum = 0, F = 1;
@@ -126,8 +122,7 @@ template <typename Scalar>
 Scalar harmonic_series_full_contact_pressure(const Scalar* A, int K, const Scalar& E, const Scalar& b1,
                                              const Scalar& Cx) {
   const Scalar Sx = Scalar(1) - Cx;
-  const detail::Clenshaw<Scalar> c =
-      detail::clenshaw_reinsch([&](int k) { return Scalar(k) * A[k]; }, K + 1, Cx, Sx);
+  const detail::Clenshaw<Scalar> c = detail::clenshaw_reinsch([&](int k) { return Scalar(k) * A[k]; }, K + 1, Cx, Sx);
   const Scalar pi = Scalar(3.141592653589793238462643383279502884L);
   return pi / b1 * E / 2 * (c.upper ? c.r0 + Sx * c.b1 : c.r0 - (Scalar(1) + Cx) * c.b1);
 }
@@ -143,8 +138,7 @@ Scalar harmonic_series_height(const Scalar* A, int K, const Scalar& Cx) {
 // dY/dCx = sum_{k<=K} k A_k U_{k-1}(Cx).
 template <typename Scalar>
 Scalar harmonic_series_height_slope(const Scalar* A, int K, const Scalar& Cx) {
-  return detail::clenshaw_reinsch([&](int j) { return Scalar(j + 1) * A[j + 1]; }, K, Cx,
-                                  Scalar(1) - Cx).b0;
+  return detail::clenshaw_reinsch([&](int j) { return Scalar(j + 1) * A[j + 1]; }, K, Cx, Scalar(1) - Cx).b0;
 }
 
 }  // namespace wavecontact

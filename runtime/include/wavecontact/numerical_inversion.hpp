@@ -17,8 +17,8 @@ double numerical_inversion(const G& g, double alpha, double u, int nodes) {
   if (!(alpha > 0 && std::isfinite(alpha)) || !(std::fabs(u) < alpha) || nodes < 1) {
     std::ostringstream os;
     os.precision(17);
-    os << "wavecontact::numerical_inversion: alpha = " << alpha << ", u = " << u
-       << ", nodes = " << nodes << " are invalid (valid: 0 < alpha finite, |u| < alpha, nodes >= 1)";
+    os << "wavecontact::numerical_inversion: alpha = " << alpha << ", u = " << u << ", nodes = " << nodes
+       << " are invalid (valid: 0 < alpha finite, |u| < alpha, nodes >= 1)";
     throw std::domain_error(os.str());
   }
   constexpr double pi = 3.14159265358979323846;

@@ -60,8 +60,8 @@ struct ProfileEvaluator {
   std::string name;
   std::string expression;  // y(x^) over the period 2 pi of x^ = pi x/b1
   std::vector<std::string> parameters;
-  double (*pressure)(const double* q, double E, double b1, double Ca, double Sa, double Cx,
-                     double Sx, double D) = nullptr;
+  double (*pressure)(const double* q, double E, double b1, double Ca, double Sa, double Cx, double Sx,
+                     double D) = nullptr;
   double (*load)(const double* q, double E, double Ca, double Sa) = nullptr;
   // dP/dSa - dP/dCa: dP/da = (pi/b1) sin(pi a/b1) times this.
   double (*load_slope_factor)(const double* q, double E, double Ca, double Sa) = nullptr;

@@ -70,7 +70,8 @@ Scalar positive_series(int j, int l, const Scalar& x, const Ratio& ratio) {
 template <typename Scalar>
 Scalar quadratic_moment_series(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   if (z <= 0) {  // c_k = 1/(2j+2k+1)
-    return positive_series(j, l, Scalar(-z), [j](int k) { return Scalar(2 * j + 2 * k - 1) / Scalar(2 * j + 2 * k + 1); });
+    return positive_series(j, l, Scalar(-z),
+                           [j](int k) { return Scalar(2 * j + 2 * k - 1) / Scalar(2 * j + 2 * k + 1); });
   }
   const Scalar y = z / one_plus_z;  // c_k = B_{j,k}
   return positive_series(j, l, y, [j](int k) { return Scalar(2 * k) / Scalar(2 * j + 2 * k + 1); }) /
@@ -103,8 +104,7 @@ Scalar quadratic_moment_closed(int j, int l, const Scalar& z, const Scalar& one_
     }
     return moment;
   }
-  return (quadratic_moment_closed(j - 1, l - 1, z, one_plus_z) -
-          quadratic_moment_closed(j - 1, l, z, one_plus_z)) / z;
+  return (quadratic_moment_closed(j - 1, l - 1, z, one_plus_z) - quadratic_moment_closed(j - 1, l, z, one_plus_z)) / z;
 }
 
 }  // namespace detail
@@ -122,7 +122,8 @@ Scalar quadratic_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z)
   // I_{0,l} by its closed form wherever it is defined (z != 0): atan or atanh, then a recurrence of
   // positive terms; for j > 0 the recurrence in j cancels where |z| is small.
   const bool closed = j == 0 ? z != 0 : !(z >= Scalar(-0.75) && z <= Scalar(7));
-  return closed ? detail::quadratic_moment_closed(j, l, z, one_plus_z) : detail::quadratic_moment_series(j, l, z, one_plus_z);
+  return closed ? detail::quadratic_moment_closed(j, l, z, one_plus_z)
+                : detail::quadratic_moment_series(j, l, z, one_plus_z);
 }
 
 template <typename Scalar>
@@ -144,7 +145,9 @@ template <typename Scalar>
 Scalar edge_moment_recurrence(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   if (l == 0) return edge_weight<Scalar>(j);
   if (j == 0) return quadratic_moment_closed(0, l, z, one_plus_z);
-  return (edge_moment_recurrence(j - 1, l - 1, z, one_plus_z) - one_plus_z * edge_moment_recurrence(j - 1, l, z, one_plus_z)) / -z;
+  return (edge_moment_recurrence(j - 1, l - 1, z, one_plus_z) -
+          one_plus_z * edge_moment_recurrence(j - 1, l, z, one_plus_z)) /
+         -z;
 }
 
 }  // namespace detail
@@ -170,8 +173,9 @@ Scalar edge_moment(int j, int l, const Scalar& z, const Scalar& one_plus_z) {
   using std::pow;
   if (l == 0) return detail::edge_weight<Scalar>(j);
   if (z >= Scalar(-0.75) && z <= 0) {
-    return detail::edge_weight<Scalar>(j) *
-           detail::positive_series(0, l, Scalar(-z), [j](int k) { return Scalar(2 * k - 1) / Scalar(2 * k + 2 * j + 1); });
+    return detail::edge_weight<Scalar>(j) * detail::positive_series(0, l, Scalar(-z), [j](int k) {
+             return Scalar(2 * k - 1) / Scalar(2 * k + 2 * j + 1);
+           });
   }
   if (z > 0 && z <= Scalar(7)) {
     return detail::edge_weight<Scalar>(j) *
@@ -267,8 +271,10 @@ Scalar two_factor(int j, int l, const Scalar& y, const Scalar& one_plus_y, const
   if (j < 0 || l < 0 || !(one_plus_y > 0) || !(one_plus_z > 0) || !std::isfinite(static_cast<double>(y)) ||
       !std::isfinite(static_cast<double>(z)) || (near && larger > 5)) {
     invalid_arguments("two_factor_moment", j, l,
-                      {{"y", static_cast<double>(y)}, {"1 + y", static_cast<double>(one_plus_y)},
-                       {"z", static_cast<double>(z)}, {"1 + z", static_cast<double>(one_plus_z)}},
+                      {{"y", static_cast<double>(y)},
+                       {"1 + y", static_cast<double>(one_plus_y)},
+                       {"z", static_cast<double>(z)},
+                       {"1 + z", static_cast<double>(one_plus_z)}},
                       "j >= 0, l >= 0, y and z finite, 1 + y > 0, 1 + z > 0, and y, z <= 4 where "
                       "|y - z| <= (4/5) max(1 + y, 1 + z)");
   }
@@ -300,9 +306,11 @@ Scalar two_factor_edge(int j, int l, const Scalar& y, const Scalar& one_plus_y, 
   // 1 - w^2 = ((1+x) - (1 + x w^2))/x along the sharper factor x.
   if (along_z) {
     return (two_factor_edge(j - 1, l - 1, y, one_plus_y, z, one_plus_z) -
-            one_plus_z * two_factor_edge(j - 1, l, y, one_plus_y, z, one_plus_z)) / -z;
+            one_plus_z * two_factor_edge(j - 1, l, y, one_plus_y, z, one_plus_z)) /
+           -z;
   }
-  return (edge_moment(j - 1, l, z, one_plus_z) - one_plus_y * two_factor_edge(j - 1, l, y, one_plus_y, z, one_plus_z)) / -y;
+  return (edge_moment(j - 1, l, z, one_plus_z) - one_plus_y * two_factor_edge(j - 1, l, y, one_plus_y, z, one_plus_z)) /
+         -y;
 }
 
 }  // namespace detail

@@ -10,9 +10,9 @@
 namespace wavecontact {
 
 struct PressureUniformity {
-  double m;             // shape parameter
-  double a_over_b1;     // contact half-width / b1
-  double max_over_mean; // max_{|x|<a} p(x) / (P / 2a), >= 1
+  double m;                // shape parameter
+  double a_over_b1;        // contact half-width / b1
+  double max_over_mean;    // max_{|x|<a} p(x) / (P / 2a), >= 1
   double x_of_max_over_a;  // where the maximum is, x/a in [0, 1)
 };
 

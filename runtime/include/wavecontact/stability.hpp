@@ -71,8 +71,8 @@ class LoadCurve {
   void locate_turning_points(const std::function<double(double)>& slope);
   std::function<double(double)> load_;
   std::function<bool(double)> admissible_;
-  double b1_;   // the half-period
-  double end_;  // the largest half-width considered
+  double b1_;                           // the half-period
+  double end_;                          // the largest half-width considered
   std::vector<double> turning_points_;  // 0, every a with dP/da = 0, b1
   std::vector<double> turning_loads_;   // P there
   std::vector<HalfWidthRange> unstable_;

@@ -43,8 +43,8 @@ struct TwoScaleParams {
 // from which the array path sums the same series over many points.
 struct RoughnessEvaluator {
   int n;
-  double (*pressure)(const double& E, const double& H2, const double& b1, const double& Ca,
-                     const double& Sa, const double& Cx, const double& Sx, const double& D);
+  double (*pressure)(const double& E, const double& H2, const double& b1, const double& Ca, const double& Sa,
+                     const double& Cx, const double& Sx, const double& D);
   double (*load)(const double& E, const double& H2, const double& Ca, const double& Sa);
   void (*legendre)(const double& Ca, double* out);
 };

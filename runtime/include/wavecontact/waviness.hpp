@@ -22,8 +22,8 @@ double pressure(const WavinessParams& params, double a, double x, Form form = Fo
 
 // The same at every point of x. For a <= b1/2 on a CPU with AVX2 and FMA this is a
 // vectorised kernel (SLEEF sinpi/cospi, then the generated closed form), same accuracy.
-Eigen::ArrayXd pressure(const WavinessParams& params, double a,
-                        const Eigen::Ref<const Eigen::ArrayXd>& x, Form form = Form::exact);
+Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
+                        Form form = Form::exact);
 
 // The same into p (p.size() == x.size()), without allocating.
 void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,

@@ -15,9 +15,9 @@ namespace wavecontact::detail {
 
 namespace {
 
-constexpr double working_tail = 1e-9;        // of a zone's coefficients: beyond, more nodes
-constexpr double cut_margin = 0.1;           // of a zone's width, left out around a cut
-constexpr double shortest_piece = 0.02;      // of a zone's width: a shorter piece is dropped
+constexpr double working_tail = 1e-9;    // of a zone's coefficients: beyond, more nodes
+constexpr double cut_margin = 0.1;       // of a zone's width, left out around a cut
+constexpr double shortest_piece = 0.02;  // of a zone's width: a shorter piece is dropped
 
 // At least the nodes a zone's width asks for: four a half wavelength of the shortest harmonic
 // on top of the 16 of a cap, so that the density of a zone that spans several asperities is
@@ -29,7 +29,9 @@ void fit_nodes(Configuration& c, const SurfaceModel& surface) {
     const double halves = (z.geometry.b - z.geometry.a) / surface.resolution;
     std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
     const double r = KinkCorrection::radius_for(surface, z.geometry);
-    if (r > 0) needed = std::max(needed, static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
+    if (r > 0)
+      needed = std::max(needed,
+                        static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
     if (z.d.size() < needed) z.d.resize(std::min<std::size_t>(most_working_nodes, needed), 0.0);
   }
 }
@@ -48,7 +50,9 @@ bool grow_nodes(Configuration& c, double limit, const std::function<bool(const Z
   return grown;
 }
 
-ZoneUnknowns zone_of(double a, double b, std::size_t nodes) { return {ZoneGeometry(a, b), std::vector<double>(nodes, 0.0)}; }
+ZoneUnknowns zone_of(double a, double b, std::size_t nodes) {
+  return {ZoneGeometry(a, b), std::vector<double>(nodes, 0.0)};
+}
 
 void insert_zone(Configuration& c, ZoneUnknowns z) {
   const auto at = std::lower_bound(c.zones.begin(), c.zones.end(), z.geometry.a,
@@ -156,9 +160,11 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
     } else if (!system.windows_fit(c)) {
       continue;  // a kink window chosen again
     } else if (!grow_nodes(c, working_tail)) {
-      const Verification v = verify(ContactSolution(model, c), gap_tolerance * surface.height_range, pressure_tolerance);
+      const Verification v =
+          verify(ContactSolution(model, c), gap_tolerance * surface.height_range, pressure_tolerance);
       if (tracing()) {
-        std::fprintf(stderr, "wavecontact trace: verified: %zu tension%s, %zu penetration%s (lowest gap %.3g at %.6g)\n",
+        std::fprintf(stderr,
+                     "wavecontact trace: verified: %zu tension%s, %zu penetration%s (lowest gap %.3g at %.6g)\n",
                      v.tensions.size(), v.tensions.size() == 1 ? "" : "s", v.penetrations.size(),
                      v.penetrations.size() == 1 ? "" : "s", v.lowest_gap, v.x_of_lowest_gap);
         for (const Tension& t : v.tensions) {

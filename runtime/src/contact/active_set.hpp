@@ -20,15 +20,15 @@
 
 namespace wavecontact::detail {
 
-inline constexpr int working_nodes = 16;          // Chebyshev nodes of a zone while settling
-inline constexpr double working_residual = 1e-10;  // Newton's tolerance while settling
-inline constexpr double gap_tolerance = 1e-9;      // of the height range
-inline constexpr double pressure_tolerance = 1e-9; // of the largest pressure
+inline constexpr int working_nodes = 16;            // Chebyshev nodes of a zone while settling
+inline constexpr double working_residual = 1e-10;   // Newton's tolerance while settling
+inline constexpr double gap_tolerance = 1e-9;       // of the height range
+inline constexpr double pressure_tolerance = 1e-9;  // of the largest pressure
 inline constexpr int most_nodes = 4096;
 // A zone across a kink: its window may be as narrow as the sliver between the kink and an end
 // (kink_correction.hpp), and Chebyshev nodes resolve it only where they crowd towards that end.
 inline constexpr int most_kinked_nodes = 32768;
-inline constexpr int most_working_nodes = 4096;    // while settling, the zones are what matters
+inline constexpr int most_working_nodes = 4096;  // while settling, the zones are what matters
 
 // The part of a zone's coefficients the last three hold: how far its series is from converged.
 double coefficient_tail(const std::vector<double>& d);

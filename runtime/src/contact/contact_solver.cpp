@@ -21,13 +21,14 @@ namespace wavecontact::detail {
 
 namespace {
 
-constexpr int most_changes = 400;  // changes of zones in one attempt
-constexpr int quick_changes = 4;   // from one zone at the top
+constexpr int most_changes = 400;               // changes of zones in one attempt
+constexpr int quick_changes = 4;                // from one zone at the top
 constexpr double max_single_zone_harmonic = 8;  // the highest harmonic of a surface tried so
 
 }  // namespace
 
-ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double tolerance, int nodes, WorkBudget budget)
+ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double tolerance, int nodes,
+                             WorkBudget budget)
     : surface_(std::move(surface)), tolerance_(tolerance), fixed_nodes_(nodes), budget_(std::move(budget)) {
   // Full contact at P = 0: p0 = sum_{j>=1} d_j cos(j x^), the onset -2 pi min p0.
   const ContactSolution full(surface_, full_contact_configuration(0, 0));
@@ -74,7 +75,8 @@ Configuration ContactSolver::full_contact_configuration(double P, int nodes) con
       magnitude += std::fabs(z.d[static_cast<std::size_t>(j)]);
     }
     c.C = std::log(2.0) * z.d[0] - G[0];
-    const double tail = std::fabs(z.d[static_cast<std::size_t>(count - 1)]) + std::fabs(z.d[static_cast<std::size_t>(count - 2)]);
+    const double tail =
+        std::fabs(z.d[static_cast<std::size_t>(count - 1)]) + std::fabs(z.d[static_cast<std::size_t>(count - 2)]);
     c.zones.push_back(std::move(z));
     if (nodes > 0 || tail <= 1e-15 * magnitude || count >= most_nodes) return c;
     count = std::min(most_nodes, count * 2);
@@ -125,7 +127,8 @@ Configuration ContactSolver::settle_at(double P, const Configuration* previous) 
   if (previous && !few_zones) {
     if (std::optional<Configuration> c = attempt("the previous load's contact", *previous)) return std::move(*c);
   }
-  if (std::optional<Configuration> c = attempt("a finer grid's contact", grid_seed(*surface_, P, 2 * cells, working_nodes))) {
+  if (std::optional<Configuration> c =
+          attempt("a finer grid's contact", grid_seed(*surface_, P, 2 * cells, working_nodes))) {
     return std::move(*c);
   }
   throw BeyondReach("wavecontact::solve_contact: no contact found at P = " + std::to_string(P) + " (" + failures + ")");
@@ -172,7 +175,8 @@ SingleZoneResult check_single_zone(const std::shared_ptr<const SurfaceModel>& su
     }
     z.d[0] = -alternating;  // sum_j (-1)^j d_j = 0 at tau = -1 (x^ = a)
     c.C = g.h * self_logarithm(g) * z.d[0] - G[0];
-    const double tail = std::fabs(z.d[static_cast<std::size_t>(count - 1)]) + std::fabs(z.d[static_cast<std::size_t>(count - 2)]);
+    const double tail =
+        std::fabs(z.d[static_cast<std::size_t>(count - 1)]) + std::fabs(z.d[static_cast<std::size_t>(count - 2)]);
     c.zones = {std::move(z)};
     if (tail <= 1e-15 * magnitude || count >= most_nodes) break;
     count = std::min(most_nodes, 2 * count);

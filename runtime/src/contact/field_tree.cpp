@@ -89,7 +89,8 @@ std::size_t FieldTree::build(std::size_t first, std::size_t last) {
       double power = pi;  // pi 2^-k
       for (int k = 0; k < order; ++k, power /= 2) {
         double sum = 0;
-        for (int j = k % 2; j <= k && static_cast<std::size_t>(j) < count; j += 2) sum += z.d[static_cast<std::size_t>(j)] * C[k][(k - j) / 2];
+        for (int j = k % 2; j <= k && static_cast<std::size_t>(j) < count; j += 2)
+          sum += z.d[static_cast<std::size_t>(j)] * C[k][(k - j) / 2];
         own[static_cast<std::size_t>(k)] = z.geometry.h * power * sum;  // mu_k / h^k
       }
       const double delta = difference(Abscissa::midpoint(upper_[l], lower_[l]), node.centre);
@@ -142,7 +143,8 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
       // P(t_i) - P(t_ref) = (t_i - t_ref) D_i by the divided differences of the same
       // recurrence (D <- D t_i + u_ref); the logarithm's difference as log1p.
       const double ratio = node.radius / nearest;
-      const int terms = ratio > 0 ? std::min(order - 1, static_cast<int>(std::ceil(-39.1439465808987777 / std::log(ratio)))) : 0;
+      const int terms =
+          ratio > 0 ? std::min(order - 1, static_cast<int>(std::ceil(-39.1439465808987777 / std::log(ratio)))) : 0;
       const double* A = node.moments.data();
       const double* A_over_k = node.moments_over_k.data();
       const double t_ref = node.radius / d_ref;

@@ -48,7 +48,7 @@ class FieldTree {
  private:
   static constexpr int order = 44;  // moments mu_0 .. mu_{order-1}
   struct Node {
-    std::size_t first = 0, last = 0;  // zones [first, last)
+    std::size_t first = 0, last = 0;   // zones [first, last)
     std::size_t children[2] = {0, 0};  // 0: a leaf
     Abscissa centre;
     double radius = 0;

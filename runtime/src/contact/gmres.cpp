@@ -26,8 +26,10 @@ std::vector<double> gmres(const LinearMap& A, const LinearMap& M_inverse, const 
     if (beta <= tolerance * b_norm) break;
     const int m = restart;
     std::vector<std::vector<double>> V(static_cast<std::size_t>(m + 1)), Z(static_cast<std::size_t>(m));
-    std::vector<std::vector<double>> H(static_cast<std::size_t>(m + 1), std::vector<double>(static_cast<std::size_t>(m), 0.0));
-    std::vector<double> cs(static_cast<std::size_t>(m)), sn(static_cast<std::size_t>(m)), g(static_cast<std::size_t>(m + 1), 0.0);
+    std::vector<std::vector<double>> H(static_cast<std::size_t>(m + 1),
+                                       std::vector<double>(static_cast<std::size_t>(m), 0.0));
+    std::vector<double> cs(static_cast<std::size_t>(m)), sn(static_cast<std::size_t>(m)),
+        g(static_cast<std::size_t>(m + 1), 0.0);
     V[0] = r;
     for (double& v : V[0]) v /= beta;
     g[0] = beta;

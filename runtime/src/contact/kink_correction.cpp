@@ -171,7 +171,8 @@ double KinkCorrection::direct_potential(double s) const {
 double KinkCorrection::potential(double x) const {
   const double s = std::cos(x);
   // The last piece that starts at or below s (the pieces are sorted and tile [-1, 1]).
-  const auto after = std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double v, const Piece& p) { return v < p.lo; });
+  const auto after =
+      std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double v, const Piece& p) { return v < p.lo; });
   if (after == pieces_.begin()) return direct_potential(s);
   const Piece& p = *(after - 1);
   if (!(s <= p.hi)) return direct_potential(s);

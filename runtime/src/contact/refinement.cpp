@@ -103,7 +103,8 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
   // (by four at least: below, its rounding is reached).
   std::vector<double> difference, previous(c.zones.size(), std::numeric_limits<double>::infinity());
   std::vector<bool> converging(c.zones.size(), true);
-  const double highest = verify(ContactSolution(surface, c), gap_tolerance * range, pressure_tolerance).highest_pressure;
+  const double highest =
+      verify(ContactSolution(surface, c), gap_tolerance * range, pressure_tolerance).highest_pressure;
   // A zone already at its most nodes cannot double: its estimate is its change from half as many.
   const auto most = [](const ZoneUnknowns& z) {
     return static_cast<std::size_t>(z.kink_window > 0 ? most_kinked_nodes : most_nodes);
@@ -134,7 +135,8 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
     }
     if (!grown) break;
     finer = solve(finer);
-    const std::vector<double> change = zone_differences(ContactSolution(surface, c), ContactSolution(surface, finer), highest);
+    const std::vector<double> change =
+        zone_differences(ContactSolution(surface, c), ContactSolution(surface, finer), highest);
     for (std::size_t k = 0; k < change.size(); ++k) {
       if (finer.zones[k].d.size() != c.zones[k].d.size()) {
         converging[k] = change[k] < 0.25 * previous[k];

@@ -9,14 +9,11 @@
 namespace wavecontact::detail {
 
 ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration)
-    : surface_(std::move(surface)), configuration_(std::move(configuration)),
-      fields_(*surface_, configuration_) {
+    : surface_(std::move(surface)), configuration_(std::move(configuration)), fields_(*surface_, configuration_) {
   for (const ZoneUnknowns& z : configuration_.zones) ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
 }
 
-bool ContactSolution::full_contact() const {
-  return zone_count() == 1 && zone(0).top() && zone(0).valley();
-}
+bool ContactSolution::full_contact() const { return zone_count() == 1 && zone(0).top() && zone(0).valley(); }
 
 std::size_t ContactSolution::zone_at(double x) const {
   // The first end above x: inside a zone when it is the zone's b (odd position).
@@ -38,9 +35,7 @@ double ContactSolution::pressure(double x) const {
   return fields_.kinks[k] ? p + std::sin(x) * fields_.kinks[k]->density(std::cos(x)) : p;
 }
 
-double ContactSolution::potential(double x) const {
-  return fields_.potential(x, zone_count());
-}
+double ContactSolution::potential(double x) const { return fields_.potential(x, zone_count()); }
 
 double ContactSolution::gap(double x) const {
   x = std::fabs(x);

@@ -51,9 +51,9 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
     }
   }
   const double allowed = -pressure_tolerance * v.highest_pressure;
-  v.tensions.erase(std::remove_if(v.tensions.begin(), v.tensions.end(),
-                                  [&](const Tension& t) { return !(t.pressure < allowed); }),
-                   v.tensions.end());
+  v.tensions.erase(
+      std::remove_if(v.tensions.begin(), v.tensions.end(), [&](const Tension& t) { return !(t.pressure < allowed); }),
+      v.tensions.end());
   v.pressure_ok = v.tensions.empty();
   // The gap on each stretch between zones (and to the top and the valley).
   std::vector<std::pair<double, double>> regions;

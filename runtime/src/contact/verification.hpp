@@ -25,10 +25,10 @@ struct Tension {
 struct Verification {
   double highest_pressure = 0, x_of_highest_pressure = 0;
   double lowest_pressure = 0, x_of_lowest_pressure = 0;  // over the zones
-  double lowest_gap = 0, x_of_lowest_gap = 0;             // off them
-  std::vector<Penetration> penetrations;                  // gap below -gap_tolerance
-  std::vector<Tension> tensions;                          // p below -pressure_tolerance * highest
-  bool pressure_ok = true;                                // lowest >= -pressure_tolerance * highest
+  double lowest_gap = 0, x_of_lowest_gap = 0;            // off them
+  std::vector<Penetration> penetrations;                 // gap below -gap_tolerance
+  std::vector<Tension> tensions;                         // p below -pressure_tolerance * highest
+  bool pressure_ok = true;                               // lowest >= -pressure_tolerance * highest
 };
 
 Verification verify(const ContactSolution& solution, double gap_tolerance, double pressure_tolerance);

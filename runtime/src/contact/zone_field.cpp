@@ -16,8 +16,8 @@ struct Conformal {
 Conformal conformal(const ZoneGeometry& g, double x) {
   const double zm = g.z_minus_1(x), zp = g.z_plus_1(x);
   const double root = std::sqrt(zm * zp);  // both of one sign off the zone
-  if (zm > 0) {                             // z > 1
-    const double sum = 1 + zm + root;        // z + w
+  if (zm > 0) {                            // z > 1
+    const double sum = 1 + zm + root;      // z + w
     return {1 / sum, -std::log1p(zm + root), root};
   }
   const double sum = 1 - zp + root;  // -(z + w) = |z| + |w|, |z| = 1 - zp
@@ -64,13 +64,15 @@ double zone_pressure(const ZoneGeometry& g, const double* d, int count, double x
   if (g.top()) {
     // sum d_j T_j = (1 + tau) sum g_j V_j, (1 + tau) V_j = T_j + T_{j+1}: d_k = g_k + g_{k-1};
     // sin x / sqrt(1 - tau) = sqrt(2 h) cos(x/2).
-    for (int k = 0; k + 1 < count; ++k) c[static_cast<std::size_t>(k)] = d[k] - (k > 0 ? c[static_cast<std::size_t>(k - 1)] : 0);
+    for (int k = 0; k + 1 < count; ++k)
+      c[static_cast<std::size_t>(k)] = d[k] - (k > 0 ? c[static_cast<std::size_t>(k - 1)] : 0);
     return std::sqrt(2 * g.h) * std::cos(x / 2) * std::sqrt(one_plus) *
            chebyshev::sum_v(c.data(), static_cast<std::size_t>(count - 1), tau);
   }
   if (g.valley()) {
     // (1 - tau) W_j = T_j - T_{j+1}: d_k = g_k - g_{k-1}; sin x / sqrt(1 + tau) = sqrt(2 h) sin(x/2).
-    for (int k = 0; k + 1 < count; ++k) c[static_cast<std::size_t>(k)] = d[k] + (k > 0 ? c[static_cast<std::size_t>(k - 1)] : 0);
+    for (int k = 0; k + 1 < count; ++k)
+      c[static_cast<std::size_t>(k)] = d[k] + (k > 0 ? c[static_cast<std::size_t>(k - 1)] : 0);
     return std::sqrt(2 * g.h) * std::sin(x / 2) * std::sqrt(one_minus) *
            chebyshev::sum_w(c.data(), static_cast<std::size_t>(count - 1), tau);
   }
@@ -78,7 +80,8 @@ double zone_pressure(const ZoneGeometry& g, const double* d, int count, double x
   for (int k = 0; k + 2 < count; ++k) {
     c[static_cast<std::size_t>(k)] = 2 * d[k] + (k >= 2 ? c[static_cast<std::size_t>(k - 2)] : 0);
   }
-  return std::sin(x) * std::sqrt(one_minus * one_plus) * chebyshev::sum_u(c.data(), static_cast<std::size_t>(count - 2), tau);
+  return std::sin(x) * std::sqrt(one_minus * one_plus) *
+         chebyshev::sum_u(c.data(), static_cast<std::size_t>(count - 2), tau);
 }
 
 }  // namespace wavecontact::detail

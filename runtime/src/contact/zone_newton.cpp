@@ -48,8 +48,8 @@ std::vector<double> ZoneSystem::linear_solve(const Linearisation& at, const std:
     for (std::size_t i = 0; i < F.size(); ++i) F[i] = (F[i] - at.F[i]) / h;
     return F;
   };
-  return gmres(jacobian_times, [&](const std::vector<double>& v) { return preconditioner.apply(v); }, rhs, tolerance,
-               60, 3);
+  return gmres(
+      jacobian_times, [&](const std::vector<double>& v) { return preconditioner.apply(v); }, rhs, tolerance, 60, 3);
 }
 
 ZoneSystem::Linearisation ZoneSystem::linearise(Configuration c, bool ends_fixed) const {
@@ -145,8 +145,8 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       if (squares(next.F) < (1 - 1e-4 * lambda) * merit || halving == 8) break;
     }
     if (tracing()) {
-      std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", lambda, limiting,
-                   lambda_limit);
+      std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", lambda,
+                   limiting, lambda_limit);
     }
     at = std::move(next);
   }

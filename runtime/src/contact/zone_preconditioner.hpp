@@ -33,7 +33,7 @@ class ZonePreconditioner {
     std::size_t at = 0;
     int ends = 0, count = 0;
     std::vector<double> diagonal;  // D
-    Eigen::MatrixXd E, S;           // count x ends, ends x count
+    Eigen::MatrixXd E, S;          // count x ends, ends x count
     Eigen::FullPivLU<Eigen::MatrixXd> schur;
     Eigen::VectorXd load_row;  // dW / d(unknowns), scaled, in the unknowns' order
     Eigen::VectorXd g;         // B^-1 e_0 / row_scale

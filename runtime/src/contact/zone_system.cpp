@@ -124,8 +124,8 @@ std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vect
   const double half_E = surface.E / 2, x_ref = x[M / 2];
   std::vector<double> values(M), G(M);
   for (std::size_t u = 0; u < M; ++u) {
-    values[u] = half_E * surface.height_difference(x[u], x_ref) - (others.difference.empty() ? 0.0 : others.difference[u]) -
-                (kink ? kink->potential(x[u]) : 0.0);
+    values[u] = half_E * surface.height_difference(x[u], x_ref) -
+                (others.difference.empty() ? 0.0 : others.difference[u]) - (kink ? kink->potential(x[u]) : 0.0);
   }
   chebyshev::coefficients(values.data(), static_cast<int>(M), G.data());
   G[0] += half_E * surface.depth(x_ref) - others.at_reference;
@@ -144,7 +144,8 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
     const int M = lz.count;
     const std::vector<double> x = node_angles(zk.geometry, M);
     FieldTree::Batch others = fields.evaluate(k, x, x[static_cast<std::size_t>(M / 2)], external_slope != nullptr);
-    std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get()), own(static_cast<std::size_t>(M));
+    std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get()),
+                        own(static_cast<std::size_t>(M));
     G[0] += c.C;
     if (external_slope) (*external_slope)[k] = std::move(others.slope);
     own_potential(zk.geometry, zk.d.data(), M, own.data());
@@ -157,7 +158,8 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
     }
     // q bounded at each free end: sum_j d_j T_j(+-1) = 0 (tau = +1 at x^ = a).
     double plus = 0, minus = 0;
-    for (int j = 0; j < M; ++j) plus += zk.d[static_cast<std::size_t>(j)], minus += (j % 2 == 0 ? 1 : -1) * zk.d[static_cast<std::size_t>(j)];
+    for (int j = 0; j < M; ++j)
+      plus += zk.d[static_cast<std::size_t>(j)], minus += (j % 2 == 0 ? 1 : -1) * zk.d[static_cast<std::size_t>(j)];
     if (lz.a_free) F[row++] = zk.geometry.h * plus / lz.row_scale;
     if (lz.b_free) F[row++] = zk.geometry.h * minus / lz.row_scale;
     load += 2 * zone_load(c, fields, k);
@@ -171,7 +173,9 @@ bool ZoneSystem::windows_fit(const Configuration& c) const {
                      [&](const ZoneUnknowns& z) { return KinkCorrection::fits(surface_, z.geometry, z.kink_window); });
 }
 
-std::vector<double> ZoneSystem::residuals(const Configuration& c) const { return residual(c, layout(c, false), nullptr); }
+std::vector<double> ZoneSystem::residuals(const Configuration& c) const {
+  return residual(c, layout(c, false), nullptr);
+}
 
 void ZoneSystem::relax(Configuration& c) const {
   // Each zone's coefficients from its collocation rows with the others' field as it is:

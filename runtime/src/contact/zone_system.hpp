@@ -36,7 +36,7 @@ struct SystemLayout {
     std::size_t at = 0;  // first unknown (= first row) of the zone's block
     int free_ends = 0, count = 0;
     double end_scale = 1, row_scale = 1;
-    bool a_free = false, b_free = false;  // the ends that are unknowns (else fixed at a, b)
+    bool a_free = false, b_free = false;    // the ends that are unknowns (else fixed at a, b)
     bool a_upper = false, b_upper = false;  // in the upper half: held as 1 - s (else 1 + s)
     double a_rate = 0, b_rate = 0;          // d(x^ of the end) / d(its unknown), at the start
     double a = 0, b = 0;
