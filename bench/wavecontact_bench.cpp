@@ -22,7 +22,7 @@
 #include "wavecontact/threads.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
-#include "waviness.hpp"  // generated/
+#include "generated/waviness.hpp"
 #include "waviness_csrc.hpp"
 
 namespace {

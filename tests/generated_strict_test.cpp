@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "bounded_trigonometry.hpp"  // generated/
-#include "profiles.hpp"
-#include "roughness_evaluators.hpp"
-#include "waviness.hpp"
+#include "generated/bounded_trigonometry.hpp"
+#include "generated/profiles.hpp"
+#include "generated/roughness_evaluators.hpp"
+#include "generated/waviness.hpp"
 
 namespace tt = boost::test_tools;
 using namespace wavecontact::generated;

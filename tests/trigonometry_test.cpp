@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "bounded_trigonometry.hpp"  // generated/
+#include "generated/bounded_trigonometry.hpp"
 
 namespace {
 

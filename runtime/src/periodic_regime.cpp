@@ -7,7 +7,7 @@
 
 #include "parallel.hpp"
 #include "pressure_simd.hpp"
-#include "waviness.hpp"  // generated/
+#include "generated/waviness.hpp"
 
 namespace wavecontact::detail {
 

@@ -13,10 +13,10 @@
 
 #include <immintrin.h>
 
-#include "bounded_trigonometry.hpp"  // generated/
+#include "generated/bounded_trigonometry.hpp"
 #include "pressure_simd.hpp"
 #include "wavecontact/angles.hpp"
-#include "waviness.hpp"  // generated/
+#include "generated/waviness.hpp"
 
 namespace wavecontact::detail {
 namespace {

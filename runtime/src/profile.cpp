@@ -11,7 +11,7 @@
 #include <boost/math/special_functions/sin_pi.hpp>
 
 #include "kinked_inversion.hpp"
-#include "profiles.hpp"  // generated/
+#include "generated/profiles.hpp"
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 

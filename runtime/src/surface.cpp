@@ -10,7 +10,7 @@
 #include "wavecontact/angles.hpp"
 #include "wavecontact/contact.hpp"
 #include "wavecontact/two_scale.hpp"
-#include "waviness.hpp"  // generated/
+#include "generated/waviness.hpp"
 
 namespace wavecontact {
 

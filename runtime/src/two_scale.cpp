@@ -16,7 +16,7 @@
 
 #include "parallel.hpp"
 #include "pressure_simd.hpp"
-#include "roughness_evaluators.hpp"  // generated/
+#include "generated/roughness_evaluators.hpp"
 #include "validate.hpp"
 #include "wavecontact/angles.hpp"
 #include "wavecontact/contact.hpp"

@@ -17,7 +17,7 @@
 #include "wavecontact/angles.hpp"
 #include "wavecontact/isa.hpp"
 #include "wavecontact/threads.hpp"
-#include "waviness.hpp"  // generated/
+#include "generated/waviness.hpp"
 #include "pressure_simd.hpp"
 
 namespace wavecontact {
