@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev                    # runtime/: array API
   libsleef-dev                     # runtime/: vectorised sinpi/cospi of the array kernels
   libboost-test-dev libboost-math-dev  # tests/ (Boost.Test), runtime/ (root finding, quadrature)
-  libfftw3-dev                     # tests/: the FFT boundary-element oracle of the contact solver
+  libfftw3-dev                     # runtime/: the contact's grid guess; tests/: the oracle
   libcli11-dev                     # the wavecontact CLI
   gnuplot-nox                      # reproduce: PNG plots
   clang-14 libclang-rt-14-dev      # fuzzing (libFuzzer) and sanitizers

@@ -10,6 +10,7 @@
 #include "active_set.hpp"
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "cosine_transform.hpp"
 #include "grid_seed.hpp"
 #include "trace.hpp"
 #include "verification.hpp"
@@ -30,16 +31,20 @@ constexpr double max_single_zone_harmonic = 8;  // the highest harmonic of a sur
 ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double tolerance, int nodes,
                              WorkBudget budget)
     : surface_(std::move(surface)), tolerance_(tolerance), fixed_nodes_(nodes), budget_(std::move(budget)) {
-  // Full contact at P = 0: p0 = sum_{j>=1} d_j cos(j x^), the onset -2 pi min p0.
+  // Full contact at P = 0: p0 = sum_{j>=1} d_j cos(j x^) (and a kink's part), the onset
+  // -2 pi min p0. Sampled on a grid of at least 8 points a shortest wavelength by one cosine transform,
+  // every local minimum refined.
   const ContactSolution full(surface_, full_contact_configuration(0, 0));
-  double lowest = std::numeric_limits<double>::infinity(), at = 0;
-  const int samples = std::max(256, static_cast<int>(8 * pi / surface_->resolution));
-  std::vector<double> xs, ps;
-  for (int i = 0; i <= samples; ++i) xs.push_back(pi * i / samples), ps.push_back(full.pressure(xs.back()));
-  for (const auto& [x, p] : local_minima(xs, ps, [&](double x) { return full.pressure(x); })) {
-    if (p < lowest) lowest = p, at = x;
+  const std::vector<double>& d = full.configuration().zones[0].d;
+  std::size_t samples = 256;
+  while (samples < 8 * pi / surface_->resolution || samples + 1 < d.size()) samples *= 2;
+  std::vector<double> ps = cosine_series_on_grid(d, samples), xs(samples + 1);
+  for (std::size_t i = 0; i <= samples; ++i) {
+    xs[i] = pi * static_cast<double>(i) / static_cast<double>(samples);
+    ps[i] += full.kink_pressure(0, xs[i]);
   }
-  (void)at;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const auto& [x, p] : local_minima(xs, ps, [&](double x) { return full.pressure(x); })) lowest = std::min(lowest, p);
   onset_ = std::max(0.0, -2 * pi * lowest);
 }
 

@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <vector>
-
-#include <unsupported/Eigen/FFT>
 
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "cosine_transform.hpp"
 
 namespace wavecontact::detail {
 
@@ -17,48 +15,54 @@ namespace {
 constexpr int most_iterations = 4000;
 constexpr double settled = 1e-9;  // the pressure's relative change per iteration at the end
 
-// The displacement of the periodic half-plane under a pressure constant on each cell:
-// u_k = 2 p_k / (E* |k|) (the pressure's mean moves nothing: u's mean is 0).
+// The displacement of the periodic half-plane under an even pressure constant on each of N
+// cells, held as its half period (cells 0 … N/2): u_k = 2 p_k / (E* |k|), the mean of u left
+// at 0. An even sequence's discrete Fourier transform is its DCT-I.
 class Compliance {
  public:
-  Compliance(int cells, double E) : factor_(static_cast<std::size_t>(cells / 2 + 1)) {
+  Compliance(std::size_t points, double E) : factor_(points), transform_(points) {
+    const double cells = 2.0 * static_cast<double>(points - 1);
     factor_[0] = 0;
-    for (int k = 1; k <= cells / 2; ++k) factor_[static_cast<std::size_t>(k)] = 2.0 / (E * k);
-    fft_.SetFlag(Eigen::FFT<double>::HalfSpectrum);
+    for (std::size_t k = 1; k < points; ++k) factor_[k] = 2.0 / (E * static_cast<double>(k) * cells);
   }
   void apply(const std::vector<double>& p, std::vector<double>& u) {
-    fft_.fwd(spectrum_, p);
-    for (std::size_t k = 0; k < factor_.size(); ++k) spectrum_[k] *= factor_[k];
-    fft_.inv(u, spectrum_);
+    std::vector<double>& x = transform_.data();
+    std::copy(p.begin(), p.end(), x.begin());
+    transform_.apply();
+    for (std::size_t k = 0; k < factor_.size(); ++k) x[k] *= factor_[k];
+    transform_.apply();
+    u = x;
   }
 
  private:
   std::vector<double> factor_;
-  Eigen::FFT<double> fft_;
-  std::vector<std::complex<double>> spectrum_;
+  CosineTransform transform_;
 };
 
 // Polonsky and Keer's iteration: conjugate gradients on the cells in contact, the gap's mean
-// there as the rigid approach, cells that penetrate brought back in, the load kept.
+// there as the rigid approach, cells that penetrate brought back in, the load kept. On the
+// half period, a cell inside it stands for itself and its mirror image: weight 2 (the cells
+// at 0 and at the half period, 1).
 std::vector<double> grid_pressure(const std::vector<double>& clearance, double E, double mean_pressure) {
   const std::size_t n = clearance.size();
-  Compliance compliance(static_cast<int>(n), E);
+  const auto weight = [n](std::size_t i) { return i == 0 || i + 1 == n ? 1.0 : 2.0; };
+  const double cells = 2.0 * static_cast<double>(n - 1);
+  Compliance compliance(n, E);
   std::vector<double> p(n, mean_pressure), u(n), gap(n), direction(n, 0.0), response(n), before(n);
   double G_before = 1;
   bool conjugate = false;
   for (int iteration = 0; iteration < most_iterations; ++iteration) {
     compliance.apply(p, u);
-    double approach = 0;
-    std::size_t contact = 0;
+    double approach = 0, contact = 0;
     for (std::size_t i = 0; i < n; ++i) {
       gap[i] = clearance[i] + u[i];
-      if (p[i] > 0) approach += gap[i], ++contact;
+      if (p[i] > 0) approach += weight(i) * gap[i], contact += weight(i);
     }
-    approach /= static_cast<double>(contact);
+    approach /= contact;
     double G = 0;
     for (std::size_t i = 0; i < n; ++i) {
       gap[i] -= approach;
-      if (p[i] > 0) G += gap[i] * gap[i];
+      if (p[i] > 0) G += weight(i) * gap[i] * gap[i];
     }
     for (std::size_t i = 0; i < n; ++i) {
       direction[i] = p[i] > 0 ? gap[i] + (conjugate ? G / G_before * direction[i] : 0.0) : 0.0;
@@ -67,12 +71,15 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
     compliance.apply(direction, response);
     double response_mean = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p[i] > 0) response_mean += response[i];
+      if (p[i] > 0) response_mean += weight(i) * response[i];
     }
-    response_mean /= static_cast<double>(contact);
+    response_mean /= contact;
     double along = 0, curvature = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      if (p[i] > 0) along += gap[i] * direction[i], curvature += (response[i] - response_mean) * direction[i];
+      if (p[i] > 0) {
+        along += weight(i) * gap[i] * direction[i];
+        curvature += weight(i) * (response[i] - response_mean) * direction[i];
+      }
     }
     const double step = curvature != 0 ? along / curvature : 0.0;
     before = p;
@@ -87,12 +94,12 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
     }
     conjugate = !reentered;
     double total = 0;
-    for (double v : p) total += v;
+    for (std::size_t i = 0; i < n; ++i) total += weight(i) * p[i];
     if (!(total > 0)) return before;
-    const double scale = mean_pressure * static_cast<double>(n) / total;
+    const double scale = mean_pressure * cells / total;
     double change = 0;
-    for (std::size_t i = 0; i < n; ++i) p[i] *= scale, change += std::fabs(p[i] - before[i]);
-    if (change < settled * mean_pressure * static_cast<double>(n) && iteration > 2) break;
+    for (std::size_t i = 0; i < n; ++i) p[i] *= scale, change += weight(i) * std::fabs(p[i] - before[i]);
+    if (change < settled * mean_pressure * cells && iteration > 2) break;
   }
   return p;
 }
@@ -120,9 +127,8 @@ int seed_cells(const SurfaceModel& surface) {
 Configuration grid_seed(const SurfaceModel& surface, double P, int cells, int nodes) {
   const double cell = 2 * pi / cells;
   const std::size_t half = static_cast<std::size_t>(cells / 2);
-  std::vector<double> clearance(static_cast<std::size_t>(cells));
+  std::vector<double> clearance(half + 1);  // the half period: the surface is even
   for (std::size_t i = 0; i <= half; ++i) clearance[i] = -surface.depth(cell * static_cast<double>(i));
-  for (std::size_t i = half + 1; i < clearance.size(); ++i) clearance[i] = clearance[clearance.size() - i];
   const std::vector<double> p = grid_pressure(clearance, surface.E, P / (2 * pi));
 
   Configuration c;

@@ -31,8 +31,11 @@ double ContactSolution::pressure(double x) const {
   const ZoneUnknowns& z = configuration_.zones[k];
   if (x == z.geometry.a && !z.geometry.top()) return 0;
   if (x == z.geometry.b && !z.geometry.valley()) return 0;
-  const double p = zone_pressure(z.geometry, z.d.data(), static_cast<int>(z.d.size()), x);
-  return fields_.kinks[k] ? p + std::sin(x) * fields_.kinks[k]->density(std::cos(x)) : p;
+  return zone_pressure(z.geometry, z.d.data(), static_cast<int>(z.d.size()), x) + kink_pressure(k, x);
+}
+
+double ContactSolution::kink_pressure(std::size_t k, double x) const {
+  return fields_.kinks[k] ? std::sin(x) * fields_.kinks[k]->density(std::cos(x)) : 0.0;
 }
 
 double ContactSolution::potential(double x) const { return fields_.potential(x, zone_count()); }

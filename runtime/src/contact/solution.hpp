@@ -24,6 +24,8 @@ class ContactSolution {
   std::size_t zone_at(double x) const;
   // p^ at x^ (any sign: |x^| <= pi), 0 off the zones.
   double pressure(double x) const;
+  // The part of p^ at x^ in zone k that its kink correction carries (0 without one).
+  double kink_pressure(std::size_t k, double x) const;
   // The gap (2/E*)(Psi(x^) - C) - (y(x^) - y_top) off the zones, 0 on them.
   double gap(double x) const;
   // The load of zone k over its part of [0, pi]: pi h d_0 (the mirror image carries as much).

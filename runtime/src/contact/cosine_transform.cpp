@@ -1,0 +1,40 @@
+#include "cosine_transform.hpp"
+
+#include <algorithm>
+#include <mutex>
+#include <stdexcept>
+
+namespace wavecontact::detail {
+
+namespace {
+
+std::mutex& planner_mutex() {  // FFTW's planner is not reentrant; its plans' execution is
+  static std::mutex m;
+  return m;
+}
+
+}  // namespace
+
+CosineTransform::CosineTransform(std::size_t points) : data_(points) {
+  const std::lock_guard<std::mutex> lock(planner_mutex());
+  plan_ = fftw_plan_r2r_1d(static_cast<int>(points), data_.data(), data_.data(), FFTW_REDFT00, FFTW_ESTIMATE);
+  if (plan_ == nullptr) throw std::runtime_error("wavecontact: FFTW could not plan a DCT-I");
+}
+
+CosineTransform::~CosineTransform() {
+  const std::lock_guard<std::mutex> lock(planner_mutex());
+  fftw_destroy_plan(plan_);
+}
+
+std::vector<double> cosine_series_on_grid(const std::vector<double>& c, std::size_t N) {
+  if (c.size() > N + 1) throw std::logic_error("cosine_series_on_grid: more terms than grid points");
+  CosineTransform t(N + 1);
+  std::vector<double>& x = t.data();
+  std::fill(x.begin(), x.end(), 0.0);
+  // y_k = x_0 + (-1)^k x_N + 2 sum x_j cos(pi j k / N): the inner terms halved.
+  for (std::size_t j = 0; j < c.size(); ++j) x[j] = j == 0 || j == N ? c[j] : c[j] / 2;
+  t.apply();
+  return x;
+}
+
+}  // namespace wavecontact::detail

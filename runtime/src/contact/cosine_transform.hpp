@@ -1,0 +1,33 @@
+// The DCT-I (FFTW's REDFT00) of N + 1 points, in place:
+//   y_k = x_0 + (-1)^k x_N + 2 sum_{j=1}^{N-1} x_j cos(pi j k / N),
+// the discrete Fourier transform of an even sequence of period 2N held as its half period,
+// and its own inverse up to the factor 2N. The contact solver's grid guess and its cosine
+// series on uniform grids take it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <fftw3.h>
+
+namespace wavecontact::detail {
+
+class CosineTransform {
+ public:
+  explicit CosineTransform(std::size_t points);  // N + 1 >= 2
+  ~CosineTransform();
+  CosineTransform(const CosineTransform&) = delete;
+  CosineTransform& operator=(const CosineTransform&) = delete;
+
+  std::vector<double>& data() { return data_; }
+  void apply() const { fftw_execute(plan_); }
+
+ private:
+  std::vector<double> data_;
+  fftw_plan plan_;
+};
+
+// sum_j c_j cos(j pi k / N) at k = 0 .. N, for c of at most N + 1 terms.
+std::vector<double> cosine_series_on_grid(const std::vector<double>& c, std::size_t N);
+
+}  // namespace wavecontact::detail
