@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
+#include <exception>
+#include <mutex>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -98,6 +100,24 @@ bool for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points
 void for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points,
                     const std::function<void(std::size_t, std::size_t)>& body) {
   for_each_chunk(count, block, min_points, nullptr, body);
+}
+
+void for_each_index(std::size_t count, std::size_t min_count, const std::function<void(std::size_t)>& body) {
+  std::exception_ptr first;
+  std::atomic<bool> failed{false};
+  std::mutex guard;
+  for_each_chunk(count, 1, min_count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end && !failed.load(); ++i) {
+      try {
+        body(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(guard);
+        if (!first) first = std::current_exception();
+        failed.store(true);
+      }
+    }
+  });
+  if (first) std::rethrow_exception(first);
 }
 
 }  // namespace detail

@@ -1,5 +1,5 @@
-// Runs an array evaluation over chunks of its points on array_kernel_threads() threads
-// (wavecontact/threads.hpp).
+// Runs an array evaluation over chunks of its points, or the contact solver over its zones, on
+// array_kernel_threads() threads (wavecontact/threads.hpp).
 #pragma once
 
 #include <cstddef>
@@ -19,5 +19,10 @@ void for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points
 bool for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points,
                     const std::function<bool(std::size_t, std::size_t)>& check,
                     const std::function<void(std::size_t, std::size_t)>& body);
+
+// body(i) for every i of [0, count), on the same threads when count >= min_count (else on the
+// calling thread). A body may throw: the first exception is rethrown here, after every thread
+// has stopped (the remaining indices are then skipped).
+void for_each_index(std::size_t count, std::size_t min_count, const std::function<void(std::size_t)>& body);
 
 }  // namespace wavecontact::detail

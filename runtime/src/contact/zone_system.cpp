@@ -7,6 +7,7 @@
 
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "parallel.hpp"
 #include "zone_field.hpp"
 
 namespace wavecontact::detail {
@@ -134,11 +135,12 @@ std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vect
 
 std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLayout& L,
                                          std::vector<std::vector<double>>* external_slope) const {
-  std::vector<double> F(L.size, 0.0);
+  std::vector<double> F(L.size, 0.0), load(c.zones.size());
   const ZoneFields fields(surface_, c);
   if (external_slope) external_slope->assign(c.zones.size(), {});
-  double load = 0;
-  for (std::size_t k = 0; k < c.zones.size(); ++k) {
+  // Each zone's rows from the others' field: independent, so on the array kernels' threads
+  // (wavecontact/threads.hpp), each zone's rows computed alike on any of them.
+  const auto zone_rows = [&](std::size_t k) {
     const ZoneUnknowns& zk = c.zones[k];
     const SystemLayout::Zone& lz = L.zones[k];
     const int M = lz.count;
@@ -162,9 +164,10 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
       plus += zk.d[static_cast<std::size_t>(j)], minus += (j % 2 == 0 ? 1 : -1) * zk.d[static_cast<std::size_t>(j)];
     if (lz.a_free) F[row++] = zk.geometry.h * plus / lz.row_scale;
     if (lz.b_free) F[row++] = zk.geometry.h * minus / lz.row_scale;
-    load += 2 * zone_load(c, fields, k);
-  }
-  F[L.C_at] = (load - P_) / P_;
+    load[k] = 2 * zone_load(c, fields, k);
+  };
+  for_each_index(c.zones.size(), zones_for_threads, zone_rows);
+  F[L.C_at] = (std::accumulate(load.begin(), load.end(), 0.0) - P_) / P_;
   return F;
 }
 
