@@ -35,6 +35,10 @@ std::vector<double> plus(std::vector<double> x, double lambda, const std::vector
   return x;
 }
 
+// Below this scaled residual, rounding dominates the rows of many zones (about 1e-11 with
+// a thousand): Newton's method stops at the first iteration that does not halve it.
+constexpr double rounding_reached = 1e-10;
+
 }  // namespace
 
 std::vector<double> ZoneSystem::linear_solve(const Linearisation& at, const std::vector<double>& rhs,
@@ -75,6 +79,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   };
   std::size_t closing = std::numeric_limits<std::size_t>::max();
   double best = std::numeric_limits<double>::infinity();
+  Configuration best_c;
   int stalled = 0;  // iterations without halving the best residual
   for (int iteration = 0; iteration < 40; ++iteration) {
     if (checkpoint) checkpoint();
@@ -91,10 +96,14 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
                    result.residual, row - (L.zones.empty() ? 0 : L.zones[zone].at), zone, L.zones.size());
     }
     if (result.residual < tolerance) return finish(Outcome::converged);
+    if (result.residual < best) best_c = at.c;
     if (result.residual < 0.5 * best) {
       best = result.residual, stalled = 0;
-    } else if (++stalled >= (best < 1e-10 ? 3 : 8)) {
-      // No progress: rounding reached (a profile's heights carry their own), or failed.
+    } else if (++stalled >= (best < rounding_reached ? 1 : 8)) {
+      // No progress: rounding reached (a profile's heights carry their own), or failed. The
+      // best iterate is the result.
+      at.c = std::move(best_c);
+      result.residual = best;
       return finish(best < 1e-8 ? Outcome::converged : Outcome::failed);
     }
     // The linear solve's tolerance falls like the root of the residual: superlinear
@@ -142,7 +151,8 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       next.X = plus(at.X, lambda, step);
       next.c = unpack(next.X, L);
       next.F = residual(next.c, L, &next.external_slope);
-      if (squares(next.F) < (1 - 1e-4 * lambda) * merit || halving == 8) break;
+      // Within rounding, the merit function's changes are rounding too: no backtracking.
+      if (squares(next.F) < (1 - 1e-4 * lambda) * merit || result.residual < rounding_reached || halving == 8) break;
     }
     if (tracing()) {
       std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", lambda,
