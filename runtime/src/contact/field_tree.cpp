@@ -44,9 +44,9 @@ void shift(const std::vector<double>& from, double r, double delta, double R, st
 
 }  // namespace
 
-Abscissa Abscissa::of_angle(double x) {
-  const double sh = std::sin(x / 2), ch = std::cos(x / 2);
-  return {std::cos(x), 2 * sh * sh, 2 * ch * ch};
+Abscissa Abscissa::of_angle(const HalfAngle& x) {
+  const double sh = x.sin_half, ch = x.cos_half;
+  return {(ch - sh) * (ch + sh), 2 * sh * sh, 2 * ch * ch};  // cos x = cos^2 - sin^2 of x/2
 }
 
 Abscissa Abscissa::midpoint(const Abscissa& a, const Abscissa& b) {
@@ -61,8 +61,8 @@ double difference(const Abscissa& a, const Abscissa& b) {
 
 FieldTree::FieldTree(const Configuration& c) : zones_(c.zones) {
   for (const ZoneUnknowns& z : c.zones) {
-    upper_.push_back(Abscissa::of_angle(z.geometry.a));
-    lower_.push_back(Abscissa::of_angle(z.geometry.b));
+    upper_.push_back(Abscissa::of_angle(z.geometry.end_a));
+    lower_.push_back(Abscissa::of_angle(z.geometry.end_b));
   }
   if (!c.zones.empty()) {
     nodes_.reserve(2 * c.zones.size());
@@ -117,12 +117,13 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
   out.difference.assign(count, 0.0);
   if (slopes) out.slope.assign(count, 0.0);
   if (nodes_.empty()) return out;
-  const Abscissa reference = Abscissa::of_angle(x_ref);
-  std::vector<Abscissa> target(count);
+  const HalfAngle half_reference = HalfAngle::of(x_ref);
+  const Abscissa reference = Abscissa::of_angle(half_reference);
+  std::vector<HalfAngle> half(count);
   std::vector<double> from_reference(count);  // s_i - s_ref
   for (std::size_t i = 0; i < count; ++i) {
-    target[i] = Abscissa::of_angle(x[i]);
-    from_reference[i] = difference(target[i], reference);
+    half[i] = HalfAngle::of(x[i]);
+    from_reference[i] = difference(Abscissa::of_angle(half[i]), reference);
   }
   // The moments' part, before the factor -1/pi.
   double moment_reference = 0;
@@ -180,10 +181,10 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
         if (l == skip) continue;
         const ZoneUnknowns& z = zones_[l];
         const int n = static_cast<int>(z.d.size());
-        const double at_reference = far_potential(z.geometry, z.d.data(), n, x_ref);
+        const double at_reference = far_potential(z.geometry, z.d.data(), n, half_reference);
         out.at_reference += at_reference;
         for (std::size_t i = 0; i < count; ++i) {
-          const FieldValue f = far_field(z.geometry, z.d.data(), n, x[i]);
+          const FieldValue f = far_field(z.geometry, z.d.data(), n, half[i]);
           out.difference[i] += f.potential - at_reference;
           if (slopes) out.slope[i] += f.slope;
         }

@@ -20,7 +20,7 @@ namespace wavecontact::detail {
 // A point of [-1, 1] in s with its distances from both ends, each to full relative precision.
 struct Abscissa {
   double s = 0, from_top = 0, from_valley = 0;  // s, 1 - s, 1 + s
-  static Abscissa of_angle(double x);
+  static Abscissa of_angle(const HalfAngle& x);
   static Abscissa midpoint(const Abscissa& a, const Abscissa& b);
 };
 // a - b in s.

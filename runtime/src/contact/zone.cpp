@@ -9,17 +9,30 @@ namespace wavecontact::detail {
 
 double cos_difference(double x, double y) { return -2 * std::sin((x + y) / 2) * std::sin((x - y) / 2); }
 
-ZoneGeometry::ZoneGeometry(double a_, double b_) : a(a_), b(b_) {
+HalfAngle HalfAngle::of(double x) { return {x, std::sin(x / 2), std::cos(x / 2)}; }
+
+ZoneGeometry::ZoneGeometry(double a_, double b_) : a(a_), b(b_), end_a(HalfAngle::of(a_)), end_b(HalfAngle::of(b_)) {
   h = std::sin((a + b) / 2) * std::sin((b - a) / 2);
   m = std::cos((a + b) / 2) * std::cos((b - a) / 2);
 }
 
 bool ZoneGeometry::valley() const { return b == pi; }
 
-double ZoneGeometry::z_minus_1(double x) const { return (top() ? cos_difference(x, 0) : cos_difference(x, a)) / h; }
-double ZoneGeometry::z_plus_1(double x) const {
-  const double c = std::cos(x / 2);
-  return (valley() ? 2 * c * c : cos_difference(x, b)) / h;
+namespace {
+
+// cos x - cos y = -2 sin((x + y)/2) sin((x - y)/2), for x, y in [0, pi].
+double cos_difference(const HalfAngle& x, const HalfAngle& y) {
+  const double sum = x.sin_half * y.cos_half + x.cos_half * y.sin_half;
+  return -2 * sum * std::sin((x.x - y.x) / 2);
+}
+
+}  // namespace
+
+double ZoneGeometry::z_minus_1(const HalfAngle& p) const {
+  return (top() ? -2 * p.sin_half * p.sin_half : cos_difference(p, end_a)) / h;
+}
+double ZoneGeometry::z_plus_1(const HalfAngle& p) const {
+  return (valley() ? 2 * p.cos_half * p.cos_half : cos_difference(p, end_b)) / h;
 }
 
 std::vector<double> ZoneGeometry::angles_of(const std::vector<double>& tau) const {

@@ -9,20 +9,30 @@
 
 namespace wavecontact::detail {
 
+// A point x^ with sin(x^/2) and cos(x^/2), from which its distances to zone ends are formed.
+struct HalfAngle {
+  double x = 0, sin_half = 0, cos_half = 1;
+  static HalfAngle of(double x);
+};
+
 struct ZoneGeometry {
   ZoneGeometry() = default;
   ZoneGeometry(double a, double b);
 
   double a = 0, b = 0;  // the ends in x^
   double h = 0, m = 0;  // half-width and centre in s
+  HalfAngle end_a, end_b;
   bool top() const { return a == 0; }
   bool valley() const;
   // How many ends are free (inside (0, pi)): the zone's conditions on them.
   int free_ends() const { return (top() ? 0 : 1) + (valley() ? 0 : 1); }
 
-  // z - 1 and z + 1 at the point of angle x, z = (cos x - m)/h; z = (z - 1 + z + 1)/2.
-  double z_minus_1(double x) const;
-  double z_plus_1(double x) const;
+  // z - 1 and z + 1 at the point, z = (cos x - m)/h; z = (z - 1 + z + 1)/2. One sine each:
+  // cos x - cos a = -2 sin((x + a)/2) sin((x - a)/2), the first factor from the half angles'
+  // products (terms of one sign: no cancellation), the second, which vanishes at the end,
+  // directly.
+  double z_minus_1(const HalfAngle& p) const;
+  double z_plus_1(const HalfAngle& p) const;
 
   // The angles of the points tau_i (decreasing tau: increasing x), without cancellation.
   std::vector<double> angles_of(const std::vector<double>& tau) const;

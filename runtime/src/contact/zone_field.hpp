@@ -21,9 +21,9 @@ struct FieldValue {
 
 // The field at the point of angle x off the zone (not inside it), of the density with
 // coefficients d[0 .. count). The series stops once its terms fall below 1e-17 of the sum.
-FieldValue far_field(const ZoneGeometry& g, const double* d, int count, double x);
+FieldValue far_field(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x);
 // The potential alone, the same.
-double far_potential(const ZoneGeometry& g, const double* d, int count, double x);
+double far_potential(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x);
 
 // log(2/h): the potential on the zone of the unit density T_0 / (h sqrt(1 - tau^2)).
 double self_logarithm(const ZoneGeometry& g);

@@ -4,6 +4,7 @@
 
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "parallel.hpp"
 #include "zone_field.hpp"
 
 namespace wavecontact::detail {
@@ -32,16 +33,16 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
   const std::size_t K = c.zones.size();
   const Eigen::Index n = static_cast<Eigen::Index>(K);
   coupling_ = Eigen::MatrixXd::Zero(n, n);
-  for (std::size_t k = 0; k < K; ++k) {
+  for_each_index(K, zones_for_threads, [&](std::size_t k) {  // each row on its own
     const ZoneGeometry& gk = c.zones[k].geometry;
-    const double centre = (gk.a + gk.b) / 2;
+    const HalfAngle centre = HalfAngle::of((gk.a + gk.b) / 2);
     for (std::size_t l = 0; l < K; ++l) {
       if (l == k) continue;
       const ZoneGeometry& gl = c.zones[l].geometry;
       const double unit[1] = {1 / (pi * gl.h)};  // d_0 of a unit load
       coupling_(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l)) = far_potential(gl, unit, 1, centre);
     }
-  }
+  });
   for (std::size_t k = 0; k < K; ++k) {
     const ZoneUnknowns& z = c.zones[k];
     const SystemLayout::Zone& lz = L.zones[k];
