@@ -52,9 +52,10 @@ Figure centre_pressure(const TwoScaleSweeps& sweeps);  // Fig. 7, every load
 Figure two_scale_contact_area();                       // Fig. 8
 
 // Beyond the seed: the most uniform pressure (shape design), the contact fraction and zones
-// per period of the two-scale profile, the pressure at a multi-zone load.
+// per period of the two-scale profile, the pressure at a multi-zone load, four scales.
 Figure shape_design();                                            // fig9
 Figure contact_fraction_and_zones(const TwoScaleSweeps& sweeps);  // fig10
 Figure multi_zone_pressure();                                     // fig11
+Figure four_scale_contact();                                      // fig12
 
 }  // namespace wavecontact::cli

@@ -1,7 +1,7 @@
 // The real contact in the figures (wavecontact/contact.hpp): Fig. 6 through snap-through to
 // full contact, Fig. 7 through the whole load range, and beyond the seed: the contact
 // fraction and zones per period against the load (fig10), the pressure at a multi-zone
-// load (fig11).
+// load (fig11), the contact of a four-scale surface (fig12).
 #include <cmath>
 #include <future>
 #include <limits>
@@ -229,6 +229,55 @@ Figure multi_zone_pressure() {
   return {"fig11",
           "fig11: pressure and gap at a multi-zone load (n = 8, m = 0, pa/p* = 0.3) beside the seed's single zone "
           "carrying the same load",
+          csv.str(), script};
+}
+
+// fig12: the contact of a four-scale surface (the wave curve at m = 0 and roughness of
+// heights 0.1, 0.05, 0.025, 0.0125 mm at n = 4, 16, 64, 256), over the period and over one
+// period of the finest scale around its most loaded asperity.
+Figure four_scale_contact() {
+  const std::vector<Harmonic> scales{{0.1, 4}, {0.05, 16}, {0.025, 64}, {0.0125, 256}};
+  constexpr double P = 2.0;  // per period, in E* mm (pa/p* = 2/pi)
+  const Contact c = solve_contact(Surface(WavinessParams{H1, b1, 0, E}, scales), P, figure_solves());
+  const double finest = 2 * b1 / scales.back().n;
+  // The zoom: the most loaded zone narrower than the finest wavelength (an asperity of it),
+  // centred on the crest of the finest scale nearest to its highest pressure.
+  const ContactZone* asperity = nullptr;
+  for (const ContactZone& z : c.zones()) {
+    if (z.x_end - z.x_start < finest && (!asperity || z.max_pressure > asperity->max_pressure)) asperity = &z;
+  }
+  const double zoom_centre = std::round((asperity ? asperity->x_of_max_pressure : 0.0) / finest) * finest;
+  std::ostringstream csv;
+  csv << "panel,x_mm,p,gap_mm,in_contact\n";
+  const auto rows = [&](int panel, double from, double to, int samples) {
+    for (int i = 0; i < samples; ++i) {
+      const double x = from + (to - from) * i / (samples - 1.0);
+      const double p = c.pressure(x);
+      csv << panel << "," << number(x) << "," << number(p) << "," << number(c.gap(x)) << "," << (p > 0 ? 1 : 0)
+          << "\n";
+    }
+  };
+  rows(0, -b1, b1, 16001);
+  rows(1, zoom_centre - finest / 2, zoom_centre + finest / 2, 2001);
+  const std::string pmax = number(1.08 * c.max_pressure());
+  const std::string title = "fig12: four scales (H = 0.1, 0.05, 0.025, 0.0125 mm at n = 4, 16, 64, 256), m = 0, P = " +
+                            number(P) + " E* mm: " + std::to_string(c.zones_per_period()) + " zones per period";
+  const auto bar = [&](int panel) {  // the zones as a bar below the axis
+    return "($1 == " + std::to_string(panel) + " && $5 == 1 ? -0.04 * " + pmax + " : NaN)";
+  };
+  std::string script = "set multiplot layout 2,1 title '" + title + "'\nset key top right font ',8'\n";
+  script += "set xlabel 'x [mm]'\nset ylabel 'p / E*'\nset yrange [-0.08 * " + pmax + ":" + pmax + "]\n" +
+            plot({lines_of("fig12.csv", "", "($1 == 0 ? $2 : NaN):3", 1, 1, 1, "pressure over the period"),
+                  lines_of("fig12.csv", "", "($1 == 0 ? $2 : NaN):" + bar(0), 0, 4, 1, "the zones")});
+  script += "set xlabel 'x [mm], one period of the finest scale (n = 256) around its most loaded asperity'\n"
+            "set y2label 'gap [mm]'\nset ytics nomirror\nset y2tics\nset autoscale y2\n" +
+            plot({lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):3", 1, 2, 1, "pressure"),
+                  lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):" + bar(1), 0, 4, 1, "the zones"),
+                  lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):4 axes x1y2", 3, 2, 2, "gap (right axis)")}) +
+            "unset multiplot\n";
+  return {"fig12",
+          "fig12: the contact of a four-scale surface at P = 2 E* mm: the pressure over the period with its zones, and "
+          "one period of the finest scale (pressure and gap) around its most loaded asperity",
           csv.str(), script};
 }
 

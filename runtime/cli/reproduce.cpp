@@ -74,7 +74,7 @@ void require_png(const fs::path& path) {
 
 void reproduce(const std::string& out_dir, const std::vector<std::string>& only, std::ostream& log) {
   const std::vector<std::string> names{"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6",
-                                       "fig7", "fig8", "fig9", "fig10", "fig11"};
+                                       "fig7", "fig8", "fig9", "fig10", "fig11", "fig12"};
   for (const std::string& name : only) {
     if (std::find(names.begin(), names.end(), name) == names.end()) {
       std::string list;
@@ -112,6 +112,7 @@ void reproduce(const std::string& out_dir, const std::vector<std::string>& only,
   compute("fig9", shape_design);
   compute("fig10", [sweeps] { return contact_fraction_and_zones(sweeps.get()); });
   compute("fig11", multi_zone_pressure);
+  compute("fig12", four_scale_contact);
   std::vector<Figure> figures;
   for (std::future<Figure>& f : pending) figures.push_back(f.get());
   for (const Figure& figure : figures) {
