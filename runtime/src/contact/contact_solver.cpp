@@ -43,8 +43,15 @@ ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double
     xs[i] = pi * static_cast<double>(i) / static_cast<double>(samples);
     ps[i] += full.kink_pressure(0, xs[i]);
   }
+  // Only the wells sampled within a tenth of the range of the lowest can hold the minimum:
+  // at eight samples a shortest wavelength, a sample misses a well's bottom by about
+  // 1 - cos(pi/8), 8 % of its depth, at most.
+  const auto [low, high] = std::minmax_element(ps.begin(), ps.end());
   double lowest = std::numeric_limits<double>::infinity();
-  for (const auto& [x, p] : local_minima(xs, ps, [&](double x) { return full.pressure(x); })) lowest = std::min(lowest, p);
+  for (const auto& [x, p] : local_minima(xs, ps, [&](double x) { return full.pressure(x); },
+                                         *low + 0.1 * (*high - *low))) {
+    lowest = std::min(lowest, p);
+  }
   onset_ = std::max(0.0, -2 * pi * lowest);
 }
 
@@ -63,11 +70,11 @@ Configuration ContactSolver::full_contact_configuration(double P, int nodes) con
   // C = log(2) d_0 - G_0; the nodes grow until the coefficients' tail is negligible.
   const double half_E = surface_->E / 2;
   int count = nodes > 0 ? nodes : std::max(working_nodes, static_cast<int>(2 * pi / surface_->resolution) + 8);
+  const ZoneGeometry g(0, pi);
+  const double window = KinkCorrection::radius_for(*surface_, g);
+  const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface_, g, window);
   for (;;) {
-    const ZoneGeometry g(0, pi);
     const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
-    const double window = KinkCorrection::radius_for(*surface_, g);
-    const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface_, g, window);
     std::vector<double> values, G(static_cast<std::size_t>(count));
     for (double xi : x) values.push_back(half_E * surface_->depth(xi) - (kink ? kink->potential(xi) : 0.0));
     chebyshev::coefficients(values.data(), count, G.data());

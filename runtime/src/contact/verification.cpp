@@ -12,13 +12,13 @@
 namespace wavecontact::detail {
 
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
-                                                    const std::function<double(double)>& f) {
+                                                    const std::function<double(double)>& f, double at_most) {
   std::vector<std::pair<double, double>> minima;
   const std::size_t n = xs.size();
   for (std::size_t i = 0; i < n; ++i) {
     const bool left = i == 0 || values[i] <= values[i - 1];
     const bool right = i + 1 == n || values[i] < values[i + 1];
-    if (!left || !right) continue;
+    if (!left || !right || values[i] > at_most) continue;
     std::pair<double, double> best{xs[i], values[i]};
     const double a = i > 0 ? xs[i - 1] : xs[i], b = i + 1 < n ? xs[i + 1] : xs[i];
     if (b > a) {

@@ -34,8 +34,9 @@ struct Verification {
 Verification verify(const ContactSolution& solution, double gap_tolerance, double pressure_tolerance);
 
 // The local minima of f over the samples (x sorted), each refined by Brent's method between
-// its neighbours: (x, f(x)) pairs.
+// its neighbours: (x, f(x)) pairs; only those sampled at or below `at_most`.
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
-                                                    const std::function<double(double)>& f);
+                                                    const std::function<double(double)>& f,
+                                                    double at_most = std::numeric_limits<double>::infinity());
 
 }  // namespace wavecontact::detail
