@@ -1,0 +1,212 @@
+#!/usr/bin/python3
+"""The benchmark's figures from its JSON (Google Benchmark, written by scripts/bench.sh).
+
+    scripts/bench_report.py RESULTS.json [--python FILE] [--docs DIR]
+
+Prints each figure next to its baseline with the ratio. With --docs, rewrites the tables of
+the docs that come from a run, each between the lines `<!-- bench:NAME -->` and
+`<!-- /bench:NAME -->`, and names the run (date, machine, commit) above each; a table whose
+figures are missing from the run is left as it was, and the script says so.
+"""
+import argparse
+import json
+import os
+import re
+import sys
+
+
+class Results:
+    """The run's figures by name; with --benchmark_repetitions, the medians."""
+
+    def __init__(self, path):
+        data = json.load(open(path))
+        self.context = data.get("context", {})
+        runs = data["benchmarks"]
+        self.by_name = {b["name"]: b for b in runs if b.get("run_type") != "aggregate"}
+        self.by_name.update({b["run_name"]: b for b in runs if b.get("aggregate_name") == "median"})
+
+    def get(self, prefix):
+        """The figure named `prefix`, or `prefix/...` (Google Benchmark appends /real_time,
+        /iterations:1, /repeats:3 to a name); None if the run has none or it failed."""
+        for name, b in self.by_name.items():
+            if (name == prefix or name.startswith(prefix + "/")) and not b.get("error_occurred"):
+                return b
+        return None
+
+    def seconds(self, prefix):
+        b = self.get(prefix)
+        if b is None:
+            return None
+        return b["real_time"] * {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b["time_unit"]]
+
+    def ns_per_item(self, prefix):
+        b = self.get(prefix)
+        return None if b is None or "items_per_second" not in b else 1e9 / b["items_per_second"]
+
+    def run_name(self):
+        c = self.context
+        commit = f"commit {c['commit']}" if "commit" in c else "commit not recorded"
+        return (f"Run of {c.get('date', '?')} on {c.get('host_name', '?')} ({c.get('num_cpus', '?')} CPUs at "
+                f"{c.get('mhz_per_cpu', '?')} MHz), {commit}, `{os.path.basename(c.get('executable', '?'))}`")
+
+
+def duration(seconds):
+    if seconds >= 1:
+        return f"{seconds:.3g} s"
+    if seconds >= 1e-3:
+        return f"{seconds * 1e3:.3g} ms"
+    return f"{seconds * 1e6:.3g} µs"
+
+
+# ---- the console report -------------------------------------------------------------------
+
+def print_report(r, python_ns):
+    rows = [("waviness pressure, ns/point", r.ns_per_item, "BM_waviness_pressure_generated/1000000",
+             [("plain -ffast-math kernel", "BM_waviness_pressure_plain_fast_math/1000000"),
+              ("same formula, scalar libm", "BM_waviness_pressure_scalar_libm/1000000"),
+              ("numerical inversion", "BM_waviness_pressure_numerical/10000"),
+              ("print_csrc, no CSE", "BM_waviness_pressure_no_cse/1000000")])]
+    for n in (16, 64, 256):
+        rows.append((f"roughness pressure n={n}, ns/point", r.ns_per_item, f"BM_roughness_pressure_generated/{n}",
+                     [("numerical inversion", f"BM_roughness_pressure_numerical/{n}"),
+                      ("point API, per call", f"BM_roughness_pressure_point/{n}")]))
+    rows.append(("k_1..k_128, s", r.seconds, "BM_kcoefficients/128",
+                 [("SymPy", "BM_sympy_kcoefficients/128")]))
+    rows.append(("contact n=16, 7 zones, 1e-8, s", r.seconds, "BM_contact_multi_zone_n16",
+                 [("BEM oracle, 3 grids", "BM_contact_bem_oracle")]))
+    rows.append(("pressure beyond b1/2, array, ns/point", r.ns_per_item, "BM_pressure_beyond_half_array/10000",
+                 [("quadrature of eq. 12", "BM_pressure_beyond_half_quadrature")]))
+    rows.append(("pressure beyond b1/2, per point", r.ns_per_item, "BM_pressure_beyond_half",
+                 [("quadrature of eq. 12", "BM_pressure_beyond_half_quadrature")]))
+    rows.append(("the same within 1e-2..1e-12 of the kink", r.ns_per_item, "BM_pressure_beyond_half_near_kink",
+                 [("quadrature of eq. 12", "BM_pressure_beyond_half_near_kink_quadrature")]))
+    print(r.run_name())
+    print(f"\n{'figure':40} {'ours':>12} {'baseline':>24} {'value':>12} {'ratio':>8}")
+    for label, measure, ours_name, baselines in rows:
+        ours = measure(ours_name)
+        for baseline_label, baseline_name in baselines:
+            base = measure(baseline_name)
+            if ours is None or base is None:
+                print(f"{label:40} {'n/a':>12} {baseline_label:>24} {'n/a':>12}")
+                continue
+            print(f"{label:40} {ours:12.4g} {baseline_label:>24} {base:12.4g} {base / ours:7.1f}x")
+    for i in range(6):
+        ours, bem = r.get(f"BM_contact_many_zones/{i}"), r.get(f"BM_contact_many_zones_bem/{i}")
+        if ours is None or bem is None:
+            continue
+        t_ours, t_bem = r.seconds(f"BM_contact_many_zones/{i}"), r.seconds(f"BM_contact_many_zones_bem/{i}")
+        print(f"{ours.get('label', '')[:40]:40} {duration(t_ours):>10}, {int(ours['zones'])} zones, estimate "
+              f"{ours['error_estimate']:.1e} | BEM {int(bem['grid'])} points {duration(t_bem):>10}, p(0) off by "
+              f"{bem['p0_error']:.1e}, fraction off by {bem['fraction_error']:.1e} | {t_bem / t_ours:5.1f}x")
+    for k in (8, 16, 32, 64, 128, 256):
+        for label, shape in (("H cos(k x)", "harmonic"), ("H cos(x)^k", "power")):
+            now, whole = r.seconds(f"BM_derive_profile_{shape}/{k}"), r.seconds(f"BM_derive_whole_{shape}/{k}")
+            row = f"{'derive ' + label + ', k = ' + str(k) + ', s':40} {now if now else float('nan'):12.4g}"
+            if whole is not None and now is not None:
+                row += f" {'whole, partial fractions':>24} {whole:12.4g} {whole / now:7.1f}x"
+            print(row)
+    one, two = r.seconds("BM_waviness_pressure_threads/1"), r.seconds("BM_waviness_pressure_threads/2")
+    if one is not None and two is not None:
+        print(f"{'waviness 1e6 points, 2 threads, s':40} {two:12.4g} {'1 thread':>24} {one:12.4g} {one / two:7.2f}x")
+    ours = r.ns_per_item("BM_waviness_pressure_generated/1000000")
+    if python_ns is not None and ours is not None:
+        print(f"{'pressure 1e6 points from Python, ns/point':40} {python_ns:12.4g} {'C++ array API':>24} "
+              f"{ours:12.4g} {python_ns / ours:7.2f}x (Python / C++)")
+    for label, name in (("load P(a), s/call", "BM_load"), ("load P(a) beyond b1/2, s/call", "BM_load_beyond_half"),
+                        ("inverse a(P) for a <= b1/2, s/call", "BM_single_asperity_half_width"),
+                        ("all zones for P, given LoadCurve, s", "BM_equilibria"),
+                        ("LoadCurve (turning points of P(a)), s", "BM_load_curve"),
+                        ("pa/p* curve of 1000 points, s", "BM_pa_over_pstar_curve_1000"),
+                        ("k_1..k_1024, s", "BM_kcoefficients/1024"),
+                        ("full regeneration of generated/, s", "BM_regenerate_default"),
+                        ("contact, two scales n = 6, 64 at P = 5.3, s", "BM_contact_two_scales_6_64"),
+                        ("contact, 200 loads, two-scale n = 8, s", "BM_contact_curve_200/1"),
+                        ("contact, 200 loads, m = 10 to full, s", "BM_contact_curve_200/0")):
+        value = r.seconds(name)
+        print(f"{label:40} {value if value is not None else float('nan'):12.4g}")
+
+
+# ---- the docs' tables ---------------------------------------------------------------------
+
+def many_zones_table(r):
+    """docs/contact.md: the six many-zone cases beside boundary elements."""
+    lines = ["| case | zones a period | wavecontact, tolerance 1e-8 | its estimate | boundary elements: grid | time "
+             "| p(0) off | fraction off | time ratio |", "|---|---|---|---|---|---|---|---|---|"]
+    for i in range(6):
+        ours, bem = r.get(f"BM_contact_many_zones/{i}"), r.get(f"BM_contact_many_zones_bem/{i}")
+        if ours is None or bem is None:
+            return None
+        t_ours, t_bem = r.seconds(f"BM_contact_many_zones/{i}"), r.seconds(f"BM_contact_many_zones_bem/{i}")
+        lines.append(f"| {ours.get('label', '')} | {int(ours['zones'])} | {duration(t_ours)} | "
+                     f"{ours['error_estimate']:.1e} | {int(bem['grid'])} | {duration(t_bem)} | {bem['p0_error']:.1e} "
+                     f"| {bem['fraction_error']:.1e} | {t_bem / t_ours:.1f}× |")
+    return lines
+
+
+def contact_solves_table(r):
+    """docs/contact.md: single solves and continuations, with their targets."""
+    rows = [("n = 16, H2 = 0.15, pa/p* = 0.3 (7 zones a period), tolerance 1e-8", "BM_contact_multi_zone_n16", "10 ms"),
+            ("FFT boundary elements on the same contact (three grids, Richardson; p(0) to about 1e-5)",
+             "BM_contact_bem_oracle", ""),
+            ("two scales n = 6, 64 (H2 = 0.15, 0.01), P = 5.3 (8 zones), tolerance 1e-8",
+             "BM_contact_two_scales_6_64", "1 s"),
+            ("200 loads by one continuation: n = 8, pa/p* to 0.6, tolerance 1e-10", "BM_contact_curve_200/1", "1 s"),
+            ("200 loads: the wave curve m = 10 through snap-through to full contact, tolerance 1e-10",
+             "BM_contact_curve_200/0", "1 s")]
+    lines = ["| solve | wall time | target |", "|---|---|---|"]
+    for label, name, target in rows:
+        t = r.seconds(name)
+        if t is None:
+            return None
+        met = "" if not target else (" (met)" if t <= {"10 ms": 0.01, "1 s": 1.0}[target] else " (missed)")
+        lines.append(f"| {label} | {duration(t)} | {target}{met} |")
+    return lines
+
+
+TABLES = {"contact-many-zones": many_zones_table, "contact-solves": contact_solves_table}
+
+
+def write_docs(r, docs):
+    for file in sorted(os.listdir(docs)):
+        if not file.endswith(".md"):
+            continue
+        path = os.path.join(docs, file)
+        text = open(path).read()
+        changed = text
+        for name in re.findall(r"<!-- bench:([a-z0-9-]+) -->", text):
+            if name not in TABLES:
+                sys.exit(f"bench_report: {path}: no table named {name!r} (known: {', '.join(sorted(TABLES))})")
+            lines = TABLES[name](r)
+            if lines is None:
+                print(f"bench_report: {path}: table {name} left as it was (the run lacks its figures)")
+                continue
+            block = "\n".join([f"<!-- bench:{name} -->", f"{r.run_name()}:", ""] + lines + [f"<!-- /bench:{name} -->"])
+            pattern = re.compile(rf"<!-- bench:{name} -->.*?<!-- /bench:{name} -->", re.S)
+            if not pattern.search(changed):
+                sys.exit(f"bench_report: {path}: table {name} has no end marker <!-- /bench:{name} -->")
+            changed = pattern.sub(lambda _: block, changed)
+            print(f"bench_report: {path}: table {name} written")
+        if changed != text:
+            tmp = path + ".tmp"
+            with open(tmp, "w") as f:
+                f.write(changed)
+            os.replace(tmp, path)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results")
+    parser.add_argument("--python", help="bench/python_pressure.py's output")
+    parser.add_argument("--docs", help="rewrite the tables of the .md files in this folder")
+    args = parser.parse_args()
+    r = Results(args.results)
+    python_ns = None
+    if args.python and os.path.exists(args.python):
+        python_ns = float(open(args.python).read().split()[1])
+    print_report(r, python_ns)
+    if args.docs:
+        write_docs(r, args.docs)
+
+
+if __name__ == "__main__":
+    main()
