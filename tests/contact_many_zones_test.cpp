@@ -7,7 +7,7 @@
 // whose estimates are consistent with the next finer grid's: on 16384 points the four-scale
 // p(0) estimate is 7e-8 while 32768 points move it by 6e-7.) On two cases, solving again
 // with more nodes (a tolerance of 1e-12) confirms that the answer at tolerance 1e-8 is within
-// 1e-8.
+// 1e-8. The solver's threads do not change a bit of the answer.
 #define BOOST_TEST_MODULE contact_many_zones
 #include <boost/math/constants/constants.hpp>
 #include <boost/test/unit_test.hpp>
@@ -20,6 +20,7 @@
 #include "bem_oracle.hpp"
 #include "oracle_comparison.hpp"
 #include "wavecontact/contact.hpp"
+#include "wavecontact/threads.hpp"
 
 using namespace wavecontact;
 
@@ -100,4 +101,25 @@ BOOST_AUTO_TEST_CASE(single_harmonic_n_256) {
 
 BOOST_AUTO_TEST_CASE(single_harmonic_n_1024) {
   check_against_oracle({"H2 = 0.05, n = 1024, pa/p* = 4", 0, {{0.05, 1024}}, 4 * pi, 32768, 1000}, 1e-8);
+}
+
+BOOST_AUTO_TEST_CASE(threads_change_no_bit) {
+  // 79 zones a period, 40 in half: each zone's rows on the threads.
+  const Surface surface(WavinessParams{1.0, 10.0, 0.0, 1.0}, {{0.15, 256}});
+  std::vector<Contact> solved;
+  for (int threads : {1, 2}) {
+    set_array_kernel_threads(threads);
+    solved.push_back(solve_contact(surface, 0.2 * pi, {1e-8, 0}));
+  }
+  set_array_kernel_threads(0);
+  const Contact &one = solved[0], &two = solved[1];
+  BOOST_TEST_REQUIRE(one.zones_per_period() == two.zones_per_period());
+  BOOST_TEST(one.zones_per_period() == 79);
+  for (std::size_t k = 0; k < one.zones().size(); ++k) {
+    BOOST_TEST(one.zones()[k].x_start == two.zones()[k].x_start, "zone " << k);
+    BOOST_TEST(one.zones()[k].x_end == two.zones()[k].x_end, "zone " << k);
+    BOOST_TEST(one.zones()[k].load == two.zones()[k].load, "zone " << k);
+  }
+  BOOST_TEST(one.error_estimate() == two.error_estimate());
+  for (double x : {0.0, 0.37, 1.1, 2.9}) BOOST_TEST(one.pressure(x) == two.pressure(x), "x = " << x);
 }
