@@ -133,11 +133,16 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
     return std::any_of(surface.kinks.begin(), surface.kinks.end(),
                        [&](const Kink& k) { return k.angle > z.geometry.a && k.angle < z.geometry.b; });
   };
-  // The guess's coefficients made consistent with its zones first: Newton's method then
-  // starts with the collocation rows met and moves the ends.
-  fit_nodes(c, surface);
-  system.relax(c);
-  c = system.newton(std::move(c), working_residual, checkpoint, true).configuration;
+  // The coefficients made consistent with the zones first, for the guess and after every
+  // change of zones: Newton's method then starts with the collocation rows met and moves the
+  // ends (from one block-Jacobi sweep alone, a zone just cut or merged may start so far off
+  // that the damped steps creep).
+  const auto consistent = [&](Configuration& z) {
+    fit_nodes(z, surface);
+    system.relax(z);
+    z = system.newton(std::move(z), working_residual, checkpoint, true).configuration;
+  };
+  consistent(c);
   for (int change = 0; change <= changes; ++change) {
     if (checkpoint) checkpoint();
     fit_nodes(c, surface);
@@ -176,7 +181,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       if (v.tensions.empty()) open_zones(c, v.penetrations, surface.resolution);
       if (c.zones.empty()) return {std::nullopt, "every zone was cut away"};
     }
-    system.relax(c);
+    consistent(c);
   }
   return {std::nullopt, "the zones still changed after " + std::to_string(changes) + " changes"};
 }
