@@ -46,7 +46,7 @@ void shift(const std::vector<double>& from, double r, double delta, double R, st
 
 Abscissa Abscissa::of_angle(const HalfAngle& x) {
   const double sh = x.sin_half, ch = x.cos_half;
-  return {(ch - sh) * (ch + sh), 2 * sh * sh, 2 * ch * ch};  // cos x = cos^2 - sin^2 of x/2
+  return {std::cos(x.x), 2 * sh * sh, 2 * ch * ch};
 }
 
 Abscissa Abscissa::midpoint(const Abscissa& a, const Abscissa& b) {
