@@ -13,15 +13,18 @@
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <boost/math/constants/constants.hpp>
 #include <boost/math/tools/minima.hpp>
 
 #include "wavecontact/contact.hpp"
+#include "wavecontact/errors.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
@@ -323,6 +326,22 @@ BOOST_AUTO_TEST_CASE(clusters_near_the_top) {
   BOOST_TEST(c.rounding_error() < 1e-12);
   BOOST_TEST(c.error_estimate() < 1e-10);
   check_contact(c, 10, "m = 2, n = 256, pa/p* = 0.5");
+}
+
+// A spent work budget says how far Newton's method got. The caller's checkpoint, called at
+// the first safe point (the first Newton iteration: a rough surface starts from its grid),
+// outlasts the budget, so the first check stops the solve.
+BOOST_AUTO_TEST_CASE(a_spent_budget_names_the_lowest_residual) {
+  SolverOptions options(1e-8, 0, 0.05);
+  options.checkpoint = [] { std::this_thread::sleep_for(std::chrono::milliseconds(100)); };
+  try {
+    solve_contact(Surface(fig7(0, 0.15, 16)), 0.3 * pi, options);
+    BOOST_ERROR("the solve finished within a spent budget");
+  } catch (const BeyondReach& e) {
+    const std::string message = e.what();
+    BOOST_TEST(message.find("the work budget of 0.05 s (max_seconds) is spent") != std::string::npos, message);
+    BOOST_TEST(message.find("the lowest scaled residual Newton's method reached: ") != std::string::npos, message);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(invalid_input_is_refused) {

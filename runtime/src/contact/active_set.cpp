@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "constants.hpp"
 #include "kink_correction.hpp"
@@ -126,7 +127,7 @@ double coefficient_tail(const std::vector<double>& d) {
 }
 
 SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P, Configuration c, int changes,
-                     const std::function<void()>& checkpoint) {
+                     const Checkpoint& checkpoint) {
   const SurfaceModel& surface = *model;
   const ZoneSystem system(surface, P);
   const auto kinked = [&](const ZoneUnknowns& z) {
@@ -144,7 +145,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   };
   consistent(c);
   for (int change = 0; change <= changes; ++change) {
-    if (checkpoint) checkpoint();
+    if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
     fit_nodes(c, surface);
     const ZoneSystem::Result r = system.newton(c, working_residual, checkpoint);
     trace_configuration("newton at", P, r.configuration,

@@ -10,13 +10,13 @@
 // that passes the verification is the contact.
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include "configuration.hpp"
 #include "surface_model.hpp"
+#include "zone_system.hpp"
 
 namespace wavecontact::detail {
 
@@ -42,6 +42,6 @@ struct SettleOutcome {
 // at most `changes` changes of zones; `checkpoint` is called between Newton steps (the work
 // budget).
 SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& surface, double P, Configuration guess, int changes,
-                     const std::function<void()>& checkpoint);
+                     const Checkpoint& checkpoint);
 
 }  // namespace wavecontact::detail

@@ -57,11 +57,18 @@ ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double
 
 double ContactSolver::full_contact_load() const { return onset_; }
 
-void ContactSolver::check_budget() const {
+void ContactSolver::check_budget(double residual) const {
+  if (residual < lowest_residual_) lowest_residual_ = residual;  // NaN compares false
   budget_.check([&] {
     char text[96];
     std::snprintf(text, sizeof text, "solving at P = %.6g, the last attempt from ", target_load_);
-    return text + std::to_string(zones_tried_) + (zones_tried_ == 1 ? " zone" : " zones") + " in half a period";
+    std::string where =
+        text + std::to_string(zones_tried_) + (zones_tried_ == 1 ? " zone" : " zones") + " in half a period";
+    if (std::isfinite(lowest_residual_)) {
+      std::snprintf(text, sizeof text, "; the lowest scaled residual Newton's method reached: %.3g", lowest_residual_);
+      where += text;
+    }
+    return where;
   });
 }
 
@@ -113,7 +120,7 @@ std::optional<Configuration> ContactSolver::single_zone(double P) const {
   const ZoneSystem system(*surface_, P);
   for (int i = 0; i < 3; ++i) system.relax(c);
   zones_tried_ = 1;
-  return settle(surface_, P, std::move(c), quick_changes, [&] { check_budget(); }).contact;
+  return settle(surface_, P, std::move(c), quick_changes, [&](double residual) { check_budget(residual); }).contact;
 }
 
 Configuration ContactSolver::settle_at(double P, const Configuration* previous) const {
@@ -121,7 +128,7 @@ Configuration ContactSolver::settle_at(double P, const Configuration* previous) 
   const auto attempt = [&](const char* from, Configuration guess) -> std::optional<Configuration> {
     zones_tried_ = guess.zones.size();
     trace_configuration(from, P, guess, "a guess");
-    SettleOutcome s = settle(surface_, P, std::move(guess), most_changes, [&] { check_budget(); });
+    SettleOutcome s = settle(surface_, P, std::move(guess), most_changes, [&](double residual) { check_budget(residual); });
     if (!s.contact) failures += std::string(failures.empty() ? "" : "; ") + "from " + from + ": " + s.failure;
     return std::move(s.contact);
   };
@@ -156,12 +163,13 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
     const double P = loads[index];
     target_load_ = P;
     budget_.restart();
+    lowest_residual_ = std::numeric_limits<double>::infinity();
     if (P >= onset_) {
       solved[index] = full_contact(P);
       continue;
     }
     previous = settle_at(P, previous ? &*previous : nullptr);
-    solved[index] = refine(surface_, *previous, P, tolerance_, fixed_nodes_, [&] { check_budget(); });
+    solved[index] = refine(surface_, *previous, P, tolerance_, fixed_nodes_, [&](double residual) { check_budget(residual); });
   }
   return solved;
 }

@@ -37,7 +37,8 @@ class ContactSolver {
   std::optional<Configuration> single_zone(double P) const;
   SolvedContact full_contact(double P) const;
   Configuration full_contact_configuration(double P, int nodes) const;
-  void check_budget() const;
+  // The budget's check at a safe point; residual: Newton's there (NaN elsewhere).
+  void check_budget(double residual) const;
 
   std::shared_ptr<const SurfaceModel> surface_;
   double tolerance_;
@@ -46,6 +47,7 @@ class ContactSolver {
   double onset_ = 0;
   mutable double target_load_ = 0;
   mutable std::size_t zones_tried_ = 0;
+  mutable double lowest_residual_ = 0;  // of Newton's method on this load (infinite: none yet)
 };
 
 // Whether the single zone [0, a^] carrying its own load (bounded at a^) is the contact.

@@ -72,7 +72,7 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
 }  // namespace
 
 SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
-                     double tolerance, int fixed_nodes, const std::function<void()>& checkpoint) {
+                     double tolerance, int fixed_nodes, const Checkpoint& checkpoint) {
   // The nodes of each zone double until its pressure and ends change by less than half
   // the tolerance (or, fixed, are compared with half as many again); the error estimate is the
   // last change, that of the coarser solution: an upper bound while the series converge.

@@ -24,6 +24,6 @@ struct SolvedContact {
 // nodes per zone (the estimate is then against half as many again). Throws BeyondReach if
 // Newton's method fails on more nodes or the refined contact is not admissible.
 SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
-                     double tolerance, int fixed_nodes, const std::function<void()>& checkpoint);
+                     double tolerance, int fixed_nodes, const Checkpoint& checkpoint);
 
 }  // namespace wavecontact::detail

@@ -65,7 +65,7 @@ ZoneSystem::Linearisation ZoneSystem::linearise(Configuration c, bool ends_fixed
   return at;
 }
 
-ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, const std::function<void()>& checkpoint,
+ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, const Checkpoint& checkpoint,
                                       bool ends_fixed) const {
   Result result;
   // Each kink correction's window chosen for the zones as they start, and kept.
@@ -82,9 +82,9 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   Configuration best_c;
   int stalled = 0;  // iterations without halving the best residual
   for (int iteration = 0; iteration < 40; ++iteration) {
-    if (checkpoint) checkpoint();
     result.iterations = iteration;
     result.residual = largest(at.F);
+    if (checkpoint) checkpoint(result.residual);
     if (!(result.residual < std::numeric_limits<double>::infinity())) return finish(Outcome::failed);
     if (tracing()) {
       const std::size_t row = static_cast<std::size_t>(

@@ -73,6 +73,10 @@ std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vect
 // The load of zone k over its part of [0, pi]: pi h d_0, plus its kink correction's.
 double zone_load(const Configuration& c, const ZoneFields& fields, std::size_t k);
 
+// Called at safe points with Newton's scaled residual there (NaN outside Newton's method):
+// the work budget's checks, which may throw to abandon the solve.
+using Checkpoint = std::function<void(double residual)>;
+
 class ZoneSystem {
  public:
   // The zones carry the load P over the period.
@@ -97,8 +101,7 @@ class ZoneSystem {
   };
   // ends_fixed: the ends stay where c has them, their conditions dropped (the linear
   // system of the coefficients and C alone: a consistent start for given zones).
-  Result newton(Configuration c, double tolerance, const std::function<void()>& checkpoint,
-                bool ends_fixed = false) const;
+  Result newton(Configuration c, double tolerance, const Checkpoint& checkpoint, bool ends_fixed = false) const;
 
   // Whether every zone's kink window lies within the zone (ends move during a solve; a
   // window that no longer fits is chosen again by the next).
