@@ -129,13 +129,15 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       const double shrink = length - (moved[e + 1] - moved[e]);
       if (length > 0 && shrink > 0 && lambda * shrink > 0.9 * length) lambda = 0.9 * length / shrink, limiting = e;
     }
-    // A full step that would close the stretch twice running, or a stretch already next to
-    // nothing, is an event: a gap between zones closing, a zone reaching the top or the valley
-    // (within a resolution), or a zone vanishing (a thousandth of one).
+    // A full step that would close the stretch twice running within a thousandth of a
+    // resolution, or a stretch already next to nothing, is an event: a gap between zones
+    // closing, a zone reaching the top or the valley, or a zone vanishing. (Within a whole
+    // resolution, gaps that stay open but narrow, as between the pieces of a zone cut at a
+    // tension, were closed, and the cut undone, until the changes ran out.)
     const double length = ends[limiting + 1] - ends[limiting];
     const double shrink = length - (moved[limiting + 1] - moved[limiting]);
     const bool overshoots = lambda < 1 && shrink >= length;
-    const double near = (limiting % 2 == 1 ? 1e-3 : 1.0) * surface_.resolution;
+    const double near = 1e-3 * surface_.resolution;
     if ((overshoots && closing == limiting && length < near) || (lambda < 1 && length - lambda * shrink < 1e-9 * pi)) {
       result.stretch = limiting;
       return finish(Outcome::stretch_closes);
