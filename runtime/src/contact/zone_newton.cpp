@@ -78,8 +78,9 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     return result;
   };
   std::size_t closing = std::numeric_limits<std::size_t>::max();
-  double best = std::numeric_limits<double>::infinity();
-  Configuration best_c;
+  double best = std::numeric_limits<double>::infinity();  // the last residual that halved the one before
+  Configuration lowest;  // the iterate of the lowest residual so far
+  double lowest_residual = std::numeric_limits<double>::infinity();
   int stalled = 0;  // iterations without halving the best residual
   for (int iteration = 0; iteration < 40; ++iteration) {
     result.iterations = iteration;
@@ -96,15 +97,15 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
                    result.residual, row - (L.zones.empty() ? 0 : L.zones[zone].at), zone, L.zones.size());
     }
     if (result.residual < tolerance) return finish(Outcome::converged);
-    if (result.residual < best) best_c = at.c;
+    if (result.residual < lowest_residual) lowest = at.c, lowest_residual = result.residual;
     if (result.residual < 0.5 * best) {
       best = result.residual, stalled = 0;
     } else if (++stalled >= (best < rounding_reached ? 1 : 8)) {
       // No progress: rounding reached (a profile's heights carry their own), or failed. The
       // best iterate is the result.
-      at.c = std::move(best_c);
-      result.residual = best;
-      return finish(best < 1e-8 ? Outcome::converged : Outcome::failed);
+      at.c = std::move(lowest);
+      result.residual = lowest_residual;
+      return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
     // The linear solve's tolerance falls like the root of the residual: superlinear
     // convergence without over-solving the first, far steps (Eisenstat and Walker).
