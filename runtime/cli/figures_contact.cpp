@@ -253,15 +253,15 @@ Figure four_scale_contact() {
     for (int i = 0; i < samples; ++i) {
       const double x = from + (to - from) * i / (samples - 1.0);
       const double p = c.pressure(x);
-      csv << panel << "," << number(x) << "," << number(p) << "," << number(c.gap(x)) << "," << (p > 0 ? 1 : 0)
-          << "\n";
+      csv << panel << "," << number(x) << "," << number(p) << "," << number(c.gap(x)) << "," << (p > 0 ? 1 : 0) << "\n";
     }
   };
   rows(0, -b1, b1, 16001);
   rows(1, zoom_centre - finest / 2, zoom_centre + finest / 2, 2001);
   const std::string pmax = number(1.08 * c.max_pressure());
-  const std::string title = "fig12: four scales (H = 0.1, 0.05, 0.025, 0.0125 mm at n = 4, 16, 64, 256), m = 0, P = " +
-                            number(P) + " E* mm: " + std::to_string(c.zones_per_period()) + " zones per period";
+  const std::string title =
+      "fig12: four scales (H = 0.1, 0.05, 0.025, 0.0125 mm at n = 4, 16, 64, 256), m = 0, P = " + number(P) +
+      " E* mm: " + std::to_string(c.zones_per_period()) + " zones per period";
   const auto bar = [&](int panel) {  // the zones as a bar below the axis
     return "($1 == " + std::to_string(panel) + " && $5 == 1 ? -0.04 * " + pmax + " : NaN)";
   };
@@ -269,12 +269,13 @@ Figure four_scale_contact() {
   script += "set xlabel 'x [mm]'\nset ylabel 'p / E*'\nset yrange [-0.08 * " + pmax + ":" + pmax + "]\n" +
             plot({lines_of("fig12.csv", "", "($1 == 0 ? $2 : NaN):3", 1, 1, 1, "pressure over the period"),
                   lines_of("fig12.csv", "", "($1 == 0 ? $2 : NaN):" + bar(0), 0, 4, 1, "the zones")});
-  script += "set xlabel 'x [mm], one period of the finest scale (n = 256) around its most loaded asperity'\n"
-            "set y2label 'gap [mm]'\nset ytics nomirror\nset y2tics\nset autoscale y2\n" +
-            plot({lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):3", 1, 2, 1, "pressure"),
-                  lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):" + bar(1), 0, 4, 1, "the zones"),
-                  lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):4 axes x1y2", 3, 2, 2, "gap (right axis)")}) +
-            "unset multiplot\n";
+  script +=
+      "set xlabel 'x [mm], one period of the finest scale (n = 256) around its most loaded asperity'\n"
+      "set y2label 'gap [mm]'\nset ytics nomirror\nset y2tics\nset autoscale y2\n" +
+      plot({lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):3", 1, 2, 1, "pressure"),
+            lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):" + bar(1), 0, 4, 1, "the zones"),
+            lines_of("fig12.csv", "", "($1 == 1 ? $2 : NaN):4 axes x1y2", 3, 2, 2, "gap (right axis)")}) +
+      "unset multiplot\n";
   return {"fig12",
           "fig12: the contact of a four-scale surface at P = 2 E* mm: the pressure over the period with its zones, and "
           "one period of the finest scale (pressure and gap) around its most loaded asperity",

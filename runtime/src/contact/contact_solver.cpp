@@ -48,8 +48,8 @@ ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double
   // 1 - cos(pi/8), 8 % of its depth, at most.
   const auto [low, high] = std::minmax_element(ps.begin(), ps.end());
   double lowest = std::numeric_limits<double>::infinity();
-  for (const auto& [x, p] : local_minima(xs, ps, [&](double x) { return full.pressure(x); },
-                                         *low + 0.1 * (*high - *low))) {
+  for (const auto& [x, p] : local_minima(
+           xs, ps, [&](double x) { return full.pressure(x); }, *low + 0.1 * (*high - *low))) {
     lowest = std::min(lowest, p);
   }
   onset_ = std::max(0.0, -2 * pi * lowest);
@@ -128,7 +128,8 @@ Configuration ContactSolver::settle_at(double P, const Configuration* previous) 
   const auto attempt = [&](const char* from, Configuration guess) -> std::optional<Configuration> {
     zones_tried_ = guess.zones.size();
     trace_configuration(from, P, guess, "a guess");
-    SettleOutcome s = settle(surface_, P, std::move(guess), most_changes, [&](double residual) { check_budget(residual); });
+    SettleOutcome s =
+        settle(surface_, P, std::move(guess), most_changes, [&](double residual) { check_budget(residual); });
     if (!s.contact) failures += std::string(failures.empty() ? "" : "; ") + "from " + from + ": " + s.failure;
     return std::move(s.contact);
   };
@@ -169,7 +170,8 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
       continue;
     }
     previous = settle_at(P, previous ? &*previous : nullptr);
-    solved[index] = refine(surface_, *previous, P, tolerance_, fixed_nodes_, [&](double residual) { check_budget(residual); });
+    solved[index] =
+        refine(surface_, *previous, P, tolerance_, fixed_nodes_, [&](double residual) { check_budget(residual); });
   }
   return solved;
 }

@@ -79,7 +79,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   };
   std::size_t closing = std::numeric_limits<std::size_t>::max();
   double best = std::numeric_limits<double>::infinity();  // the last residual that halved the one before
-  Configuration lowest;  // the iterate of the lowest residual so far
+  Configuration lowest;                                   // the iterate of the lowest residual so far
   double lowest_residual = std::numeric_limits<double>::infinity();
   int stalled = 0;  // iterations without halving the best residual
   for (int iteration = 0; iteration < 40; ++iteration) {
