@@ -20,7 +20,7 @@ class CosineTransform {
   CosineTransform& operator=(const CosineTransform&) = delete;
 
   std::vector<double>& data() { return data_; }
-  void apply() const { fftw_execute(plan_); }
+  void apply() { fftw_execute(plan_); }  // on data(), in place
 
  private:
   std::vector<double> data_;
