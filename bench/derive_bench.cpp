@@ -9,7 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include "core/symbols.hpp"
-#include "emit/generate.hpp"
+#include "emit/file_contents.hpp"
 #include "engine/closed_forms.hpp"
 #include "formulas/user_profile.hpp"
 #include "profile/block_keer.hpp"

@@ -1,4 +1,4 @@
-// The cost floor of the waviness array kernel: the exact pressure (generated/waviness.hpp's
+// The cost floor of the waviness array kernel: the exact pressure (generated/waviness_evaluators.hpp's
 // formula) written plainly, compiled with -O3 -ffast-math -mavx2 -mfma (bench/CMakeLists.txt)
 // so that glibc's vectorised cos (libmvec) and reciprocal multiplications serve it. Careless
 // near the zone's edge (D = Cx - Ca cancels) and far from the 4 eps the library keeps: a

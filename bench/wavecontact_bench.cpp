@@ -12,7 +12,7 @@
 #include <Eigen/Core>
 #include <boost/math/constants/constants.hpp>
 
-#include "emit/generate.hpp"       // derive/
+#include "emit/file_contents.hpp"  // derive/
 #include "formulas/roughness.hpp"  // derive/
 #include "kinked_reference.hpp"    // tests/
 #include "plain_kernel.hpp"
@@ -22,7 +22,7 @@
 #include "wavecontact/threads.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
-#include "generated/waviness.hpp"
+#include "wavecontact/generated/waviness_evaluators.hpp"
 #include "waviness_csrc.hpp"
 
 namespace {
@@ -271,7 +271,7 @@ void BM_pressure_beyond_half_near_kink(benchmark::State& state) { pressure_point
 BENCHMARK(BM_pressure_beyond_half_near_kink);
 
 // The same zone as an array of 10^4 points, on one thread: the zone's atoms once, the Cauchy
-// part's atoms tabulated in log(1 + y) (runtime/src/cauchy_atom_table.hpp).
+// part's atoms tabulated in log(1 + y) (runtime/src/closed_forms/cauchy_atom_table.hpp).
 void BM_pressure_beyond_half_array(benchmark::State& state) {
   const Eigen::ArrayXd xs = Eigen::ArrayXd::LinSpaced(state.range(0), -0.999 * 7.5, 0.999 * 7.5);
   Eigen::ArrayXd p(xs.size());

@@ -9,8 +9,8 @@
 
 #include "core/resource_budget.hpp"
 #include "decimal_option.hpp"
-#include "emit/generate.hpp"
-#include "emit/output.hpp"
+#include "emit/file_contents.hpp"
+#include "emit/owned_output.hpp"
 #include "exit_status.hpp"
 
 namespace {

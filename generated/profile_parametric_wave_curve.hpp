@@ -13,8 +13,8 @@
 
 #include <cmath>
 
-#include "wavecontact/conjugate_logarithm.hpp"
-#include "wavecontact/quadratic_moment.hpp"
+#include "wavecontact/detail/conjugate_logarithm.hpp"
+#include "wavecontact/detail/quadratic_moment.hpp"
 #include "wavecontact/profile.hpp"
 
 namespace wavecontact::generated {
@@ -69,7 +69,7 @@ inline Scalar parametric_wave_curve_height_slope(const Scalar& H1, const Scalar&
 }
 
 // Load P (eq. 6) once the zone reaches beyond the branch point: the sub-interval moments of both
-// branches (derive/engine/sub_interval.hpp), I_{j,l} from wavecontact/quadratic_moment.hpp.
+// branches (derive/engine/sub_interval.hpp), I_{j,l} from wavecontact/detail/quadratic_moment.hpp.
 // Total ops: 38 (7 add, 16 mul, 7 div, 2 sqrt, 4 neg, 2 moment calls), 6 temporaries
 template <typename Scalar>
 inline Scalar parametric_wave_curve_beyond_branch_load(const Scalar& E, const Scalar& H1, const Scalar& m, const Scalar& Ca, const Scalar& Sa) {
@@ -214,7 +214,7 @@ inline Scalar parametric_wave_curve_flank_height_slope(const Scalar& H1, const S
 }
 
 // p_fc(x) of full contact over the whole period, both branches (derive/formulas/full_contact.hpp): p = P/(2 b1) +
-// p_fc, while it is >= 0; Psi from wavecontact/conjugate_logarithm.hpp. Its terms cancel next to a pole of
+// p_fc, while it is >= 0; Psi from wavecontact/detail/conjugate_logarithm.hpp. Its terms cancel next to a pole of
 // the other branch's formula: beyond twice the own slope there, the side's form below.
 // Total ops: 83 (24 add, 49 mul, 5 div, 0 sqrt, 2 neg, 3 moment calls), 22 temporaries
 template <typename Scalar>

@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-#include "wavecontact/harmonic_series.hpp"
+#include "wavecontact/detail/harmonic_series.hpp"
 #include "wavecontact/profile.hpp"
 
 namespace wavecontact::generated {

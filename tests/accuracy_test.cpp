@@ -13,7 +13,7 @@
 #include <sstream>
 #include <vector>
 
-#include "emit/generate.hpp"
+#include "emit/file_contents.hpp"
 #include <boost/math/special_functions/cos_pi.hpp>
 
 #include "formulas/user_profile.hpp"
@@ -149,7 +149,7 @@ GiNaC::numeric evaluate_moments(const std::vector<wavecontact::derive::MomentTer
 }  // namespace
 
 // Beyond b1/2 (the zone reaches the |cos| branch of eq. 2): the load, pa/p* and dP/da in
-// closed form (derive/engine/sub_interval.hpp, I_{j,l} in wavecontact/quadratic_moment.hpp) against
+// closed form (derive/engine/sub_interval.hpp, I_{j,l} in wavecontact/detail/quadratic_moment.hpp) against
 // the same derived forms at 40 digits, over m from 0 to 1e4 and a from just above b1/2 to b1:
 // the load, pa/p* and dP/da within 64 eps (dP/da from the moments of (1 + v^2) g' + v g, so
 // that nothing cancels as the flank piece shrinks, a -> b1/2+).

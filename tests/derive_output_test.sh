@@ -36,7 +36,7 @@ for fraction in 0 0.5 0.9 0.97 0.99 end; do
   delay=$(awk -v d="$duration" -v f="$fraction" 'BEGIN { print f == "end" ? 0 : d * f }')
   rm -rf "$work/out" "$work/before"
   cp -r "$committed" "$work/out"
-  echo "// an older version" >> "$work/out/waviness.hpp"
+  echo "// an older version" >> "$work/out/waviness_evaluators.hpp"
   echo "user file" > "$work/out/notes.txt"
   cp -r "$work/out" "$work/before"
   "${derive[@]}" --out "$work/out" &
@@ -62,7 +62,7 @@ for fraction in 0 0.5 0.9 0.97 0.99 end; do
         fi ;;
     esac
   done
-  if cmp -s "$work/out/waviness.hpp" "$work/before/waviness.hpp"; then
+  if cmp -s "$work/out/waviness_evaluators.hpp" "$work/before/waviness_evaluators.hpp"; then
     old_states=$((old_states + 1))
   else
     new_states=$((new_states + 1))
@@ -72,5 +72,5 @@ for fraction in 0 0.5 0.9 0.97 0.99 end; do
   rm "$work/out/notes.txt"
   diff -r "$work/a" "$work/out"
 done
-echo "interrupted runs: $old_states before waviness.hpp was replaced, $new_states after; each file whole; every rerun completed the update"
+echo "interrupted runs: $old_states before waviness_evaluators.hpp was replaced, $new_states after; each file whole; every rerun completed the update"
 [ "$old_states" -gt 0 ] && [ "$new_states" -gt 0 ]

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
-#include "generated/bounded_trigonometry.hpp"
-#include "generated/profiles.hpp"
-#include "generated/roughness_evaluators.hpp"
-#include "generated/waviness.hpp"
+#include "wavecontact/generated/bounded_trigonometry.hpp"
+#include "wavecontact/generated/profiles.hpp"
+#include "wavecontact/generated/roughness_evaluators.hpp"
+#include "wavecontact/generated/waviness_evaluators.hpp"
 
 namespace tt = boost::test_tools;
 using namespace wavecontact::generated;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/symbols.hpp"
-#include "emit/emit_common.hpp"
+#include "emit/shared_pieces.hpp"
 #include "engine/closed_forms.hpp"
 #include "formulas/user_profile.hpp"
 #include "profile/block_keer.hpp"

@@ -1,6 +1,6 @@
 // Profiles of high order through the runtime, derived at build time by wavecontact_generate
 // (tests/CMakeLists.txt): their cosine sums have the Legendre-Dirichlet form (derive/
-// harmonic_part.hpp), summed by wavecontact/harmonic_series.hpp. Checked against an
+// harmonic_part.hpp), summed by wavecontact/detail/harmonic_series.hpp. Checked against an
 // independent numerical inversion of eq. 12 in long double (docs/mathematics.md section 4, midpoint rule
 // in theta, its own convergence checked by doubling the nodes): the pressure within 1e-12
 // of the zone's largest pressure up to order 256, the load against the quadrature of that

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/symbols.hpp"
-#include "emit/emit_common.hpp"
+#include "emit/shared_pieces.hpp"
 #include "engine/angle_form.hpp"
 #include "formulas/full_contact.hpp"
 #include "formulas/user_profile.hpp"

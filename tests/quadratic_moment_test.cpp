@@ -1,4 +1,4 @@
-// The atoms of the closed forms beyond a = b1/2 (wavecontact/quadratic_moment.hpp) against
+// The atoms of the closed forms beyond a = b1/2 (wavecontact/detail/quadratic_moment.hpp) against
 // independent quadrature in long double (tanh-sinh), in eps of double: I_{j,l}(z) =
 // Int_0^1 w^(2j)/(1 + z w^2)^l dw over z from -1 + 1e-6 to 1e6, across the switches between the
 // series and the closed form at z = -3/4 and z = 7, its derivative rule and its refusals; the
@@ -14,7 +14,7 @@
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 
-#include "wavecontact/quadratic_moment.hpp"
+#include "wavecontact/detail/quadratic_moment.hpp"
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "core/symbols.hpp"
-#include "emit/emit_common.hpp"
+#include "emit/shared_pieces.hpp"
 #include "engine/hilbert.hpp"
 #include "engine/radicals.hpp"
 #include "engine/sub_interval.hpp"

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-#include "generated/bounded_trigonometry.hpp"
+#include "wavecontact/generated/bounded_trigonometry.hpp"
 
 namespace {
 

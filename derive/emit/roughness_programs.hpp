@@ -2,7 +2,7 @@
 // (formulas/roughness.hpp derives the forms they evaluate).
 #pragma once
 
-#include "emit/codegen.hpp"
+#include "emit/cxx_emitter.hpp"
 
 namespace wavecontact::derive {
 

@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "emit/codegen.hpp"
-#include "emit/emit_common.hpp"
+#include "emit/cxx_emitter.hpp"
+#include "emit/shared_pieces.hpp"
 #include "formulas/minimax.hpp"
 
 namespace wavecontact::derive {
@@ -90,7 +90,7 @@ std::string trigonometry_header(const BoundedSine& quarter, const std::string& c
   std::ostringstream os;
   os << banner("//", command)
      << "//\n// sin(pi t) at the bounded arguments of the array kernels' angle atoms "
-        "(runtime/src/pressure_simd_kernels.hpp,\n// which take every atom from it by exact "
+        "(runtime/src/kernels/pressure_simd_kernels.hpp,\n// which take every atom from it by exact "
         "identities), without range reduction: a minimax\n// polynomial t p(t^2) in relative "
         "error for |t| <= 1/4 (Remez exchange at "
      << working_digits

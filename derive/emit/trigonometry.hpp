@@ -1,4 +1,4 @@
-// The array kernels' trigonometry (runtime/src/pressure_simd_kernels.hpp): their angle atoms
+// The array kernels' trigonometry (runtime/src/kernels/pressure_simd_kernels.hpp): their angle atoms
 // need sin(pi t) only, by exact identities, at arguments bounded by construction
 // (|t| <= 1/4), so no range reduction: a minimax polynomial t p(t^2) derived here by the
 // Remez exchange at 50 digits (minimax.hpp), its coefficients rounded to doubles and the

@@ -29,7 +29,7 @@ struct ClosedForms {
   // dP/dSa - dP/dCa of the angle form: dP/da^ = sin(a^) * load_slope_factor.
   std::vector<RootTerm> load_slope_factor;
   // The profile in s = cos x^ (sym::Cx()), y(x^) = Y(cos x^), and dY/ds: the surface as the
-  // multi-zone contact solver of the runtime sees it (runtime/src/interval_inversion.hpp).
+  // multi-zone contact solver of the runtime sees it (runtime/src/contact/surface_model.hpp).
   GiNaC::ex height, height_slope;
   GiNaC::ex rational_height, rational_height_slope;  // R(Cx) and dR/dCx
   long harmonic = 1;                                 // the degree of Y in cos x^: the highest k of its harmonics

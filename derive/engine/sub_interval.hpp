@@ -10,7 +10,7 @@
 // Psi, T0 = beta/sqrt(alpha^2 - beta^2) (its inverse on [beta, alpha]). A Psi whose
 // denominator is c (a + b S)^l in S = T^2 integrates termwise to
 //   Int_0^T0 S^j/(a + b S)^l dT = T0^(2j+1) a^-l I_{j,l}(b T0^2/a),
-// I_{j,l}(z) = Int_0^1 w^(2j)/(1 + z w^2)^l dw (runtime/include/wavecontact/quadratic_moment.hpp),
+// I_{j,l}(z) = Int_0^1 w^(2j)/(1 + z w^2)^l dw (runtime/include/wavecontact/detail/quadratic_moment.hpp),
 // with no coefficient singular where b -> 0 (the pole passing through infinity).
 #pragma once
 

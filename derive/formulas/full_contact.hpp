@@ -35,7 +35,7 @@ namespace wavecontact::derive {
 
 // Psi(a, b, a - b) = ((a - b)/(a + b)) sqrt(b/a) log|(sqrt a + sqrt b)/(sqrt a - sqrt b)|,
 // a, b >= 0, a + b > 0, as conjugate_logarithm(a, b, a_minus_b) with a - b written without
-// cancellation (the runtime's wavecontact/conjugate_logarithm.hpp): 0 at a = b and at b = 0,
+// cancellation (the runtime's wavecontact/detail/conjugate_logarithm.hpp): 0 at a = b and at b = 0,
 // -2 at a = 0. Numerical evaluation at GiNaC::Digits.
 DECLARE_FUNCTION_3P(conjugate_logarithm)
 

@@ -15,16 +15,16 @@
 
 #include "contact_commands.hpp"
 #include "decimal_option.hpp"
-#include "errors.hpp"
 #include "exit_status.hpp"
 #include "options.hpp"
+#include "refusals.hpp"
 #include "reproduce.hpp"
 #include "single_zone_commands.hpp"
 #include "user_profile_commands.hpp"
 #include "wavecontact/contact.hpp"
 #include "wavecontact/errors.hpp"
-#include "wavecontact/two_scale.hpp"
 #include "wavecontact/shape_design.hpp"
+#include "wavecontact/two_scale.hpp"
 
 namespace wavecontact::cli {
 

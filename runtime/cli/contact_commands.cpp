@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "errors.hpp"
+#include "refusals.hpp"
 
 namespace wavecontact::cli {
 

@@ -9,7 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "errors.hpp"
+#include "refusals.hpp"
 #include "user_profile_commands.hpp"
 #include "wavecontact/contact.hpp"
 #include "wavecontact/profile.hpp"

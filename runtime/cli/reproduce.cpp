@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "errors.hpp"
 #include "figure.hpp"
+#include "refusals.hpp"
 
 extern char** environ;
 

@@ -10,7 +10,7 @@ namespace wavecontact::cli {
 
 // Writes DIR/figN.csv, DIR/figN.gp and DIR/figN.png (of the figures named in `only`, or all
 // of them and DIR/REPORT.md); progress goes to `log`.
-// Throws OutputError (errors.hpp) if a file cannot be written, gnuplot fails or leaves a
+// Throws OutputError (refusals.hpp) if a file cannot be written, gnuplot fails or leaves a
 // PNG that is not whole.
 void reproduce(const std::string& out_dir, const std::vector<std::string>& only, std::ostream& log);
 

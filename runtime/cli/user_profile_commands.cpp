@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "errors.hpp"
+#include "refusals.hpp"
 #include "wavecontact/stability.hpp"
 
 namespace wavecontact::cli {

@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "emit/generate.hpp"
+#include "emit/file_contents.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::vector<int> ns;

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "core/symbols.hpp"
-#include "emit/generate.hpp"
+#include "emit/file_contents.hpp"
 #include "formulas/user_profile.hpp"
 #include "profile/expression_input.hpp"
 

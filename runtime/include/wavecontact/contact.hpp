@@ -6,7 +6,7 @@
 // H_i cos(n_i pi x/b1) (eqs. 1, 3), or a user profile (profile.hpp). The zones' ends solve
 // the bounded inversion of the finite Hilbert transform on several intervals (Muskhelishvili)
 // with one rigid approach for all zones; the zones are found by continuation in the load
-// (runtime/src/contact_solver.hpp). Where one zone per period is the solution this is the
+// (runtime/src/contact/contact_solver.hpp). Where one zone per period is the solution this is the
 // seed's single-zone solution (the closed forms of waviness.hpp, two_scale.hpp, profile.hpp,
 // to 1e-10); where it is not, those closed forms are refused (admissibility in stability.hpp).
 #pragma once

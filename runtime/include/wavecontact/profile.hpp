@@ -34,7 +34,7 @@ struct BranchEvaluators {
   // The closed-form pressure beyond the branch point on each side (0: the top, Cx above
   // `cosine`; 1: the flank), in parts: own, own_edge, other_cauchy, other_cauchy_edge, other,
   // other_edge, jump (derive/formulas/beyond_branch.hpp), each from its atoms (atom_counts of them:
-  // moments of the zone, or at the Cauchy argument y, 1 + y of the point, derive/emit/emit_common.hpp);
+  // moments of the zone, or at the Cauchy argument y, 1 + y of the point, derive/emit/shared_pieces.hpp);
   // and each piece's pole argument, which selects the basis.
   void (*cauchy_argument[2])(const double* q, double E, double b1, double Ca, double Sa, double Cx, double Sx, double D,
                              double* y) = {};

@@ -1,10 +1,10 @@
 // Contact of the parametric wave curve (seed eq. 2) with an elastic half-plane: one contact
 // zone |x| <= a per period, 0 < a < b1.
 // - a <= b1/2 (single-asperity regime, the zone stays on the top half of each asperity,
-//   where eq. 11 holds): the closed forms derived by wavecontact-derive (generated/waviness.hpp).
+//   where eq. 11 holds): the closed forms derived by wavecontact-derive (generated/waviness_evaluators.hpp).
 // - a > b1/2 (periodic regime, the zone reaches the |cos| branch of eq. 2, whose slope has
 //   a kink at x = b1/2): the exact form is the inversion of eq. 12 by quadrature split at
-//   the kink, geometrically convergent on each smooth piece (runtime/src/kinked_inversion.*);
+//   the kink, geometrically convergent on each smooth piece (runtime/src/closed_forms/kinked_inversion.*);
 //   Form::paper continues the printed eq. 13/14, as the seed's Fig. 5b does.
 // Whether the single-zone solution is physical (p >= 0) and stable (dP/da > 0): stability.hpp.
 #pragma once

@@ -16,7 +16,7 @@
 #include "configuration.hpp"
 #include "refinement.hpp"
 #include "surface_model.hpp"
-#include "work_budget.hpp"
+#include "support/work_budget.hpp"
 
 namespace wavecontact::detail {
 

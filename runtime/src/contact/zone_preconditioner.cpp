@@ -4,7 +4,7 @@
 
 #include "chebyshev.hpp"
 #include "constants.hpp"
-#include "parallel.hpp"
+#include "support/parallel.hpp"
 #include "zone_field.hpp"
 
 namespace wavecontact::detail {

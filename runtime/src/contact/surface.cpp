@@ -1,0 +1,147 @@
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <boost/math/constants/constants.hpp>
+
+#include "contact/surface_model.hpp"
+#include "contact/zone.hpp"
+#include "support/validate.hpp"
+#include "wavecontact/angles.hpp"
+#include "wavecontact/contact.hpp"
+#include "wavecontact/generated/waviness_evaluators.hpp"
+#include "wavecontact/two_scale.hpp"
+
+namespace wavecontact {
+
+namespace {
+
+using boost::math::double_constants::pi;
+
+// The smallest panel extent in x^ for a surface whose highest harmonic is n.
+double resolution(int n) { return pi / std::max(4, n); }
+
+}  // namespace
+
+Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness) : b1_(w.b1), E_(w.E) {
+  constexpr const char* function = "wavecontact::Surface";
+  validate(w, function);
+  if (roughness.size() > max_harmonics) {
+    detail::domain_error(function, "harmonics", static_cast<double>(roughness.size()),
+                         "at most " + std::to_string(max_harmonics) + " harmonics");
+  }
+  int highest = 0;
+  for (const Harmonic& h : roughness) {
+    if (h.H != 0 && !(std::fabs(h.H) >= min_scale && std::fabs(h.H) <= max_scale)) {
+      detail::domain_error(function, "H", h.H,
+                           "0 or " + detail::format(min_scale) + " <= |H| <= " + detail::format(max_scale));
+    }
+    if (h.n < 1 || h.n > max_roughness_n) {
+      detail::domain_error(function, "n", h.n, "1 <= n <= " + std::to_string(max_roughness_n));
+    }
+    highest = std::max(highest, h.n);
+  }
+  height_scale_ = w.H1;
+  for (const Harmonic& h : roughness) height_scale_ += std::fabs(h.H);
+  auto s = std::make_shared<detail::SurfaceModel>();
+  const double H1 = w.H1, m = w.m;
+  // Eq. 2 in c = cos x^: the top branch Y(|c|), odd in c; each harmonic H cos(n x^).
+  const auto wave = [H1, m](double c) { return std::copysign(generated::waviness_height(H1, m, std::fabs(c)), c); };
+  s->height = [=](double x) {
+    double y = wave(std::cos(x));
+    for (const Harmonic& h : roughness) y += h.H * std::cos(h.n * x);
+    return y;
+  };
+  s->slope = [=](double x) {
+    double slope = -std::sin(x) * generated::waviness_height_slope(H1, m, std::fabs(std::cos(x)));
+    for (const Harmonic& h : roughness) slope -= h.H * h.n * std::sin(h.n * x);
+    return slope;
+  };
+  // Differences by products of sines: cos u - cos v = -2 sin((u + v)/2) sin((u - v)/2), and on
+  // one branch Y(c) - Y(c0) = H1 (m + 1) (c - c0) / ((1 + m |c|) (1 + m |c0|)).
+  s->height_difference = [=](double x, double x0) {
+    const double c = std::cos(x), c0 = std::cos(x0);
+    double dy = 0;
+    if ((c >= 0) == (c0 >= 0)) {
+      dy = H1 * (m + 1) * detail::cos_difference(x, x0) / ((1 + m * std::fabs(c)) * (1 + m * std::fabs(c0)));
+    } else {
+      dy = wave(c) - wave(c0);
+    }
+    for (const Harmonic& h : roughness) dy += h.H * -2 * std::sin(h.n * (x + x0) / 2) * std::sin(h.n * (x - x0) / 2);
+    return dy;
+  };
+  if (m > 0) {
+    // x^ = pi/2, c = 0: beyond it the branch Y(c) = -Y_top(-c), so the slopes differ by
+    // D'(c) = Y'_top(-c) - Y'_top(c), analytic within 1/m (the branches' poles at c = -+1/m).
+    const double E = w.E;
+    detail::Kink kink;
+    kink.angle = pi / 2, kink.s = 0, kink.radius = 1 / m;
+    kink.slope_jump = [=](double c) {
+      return E / 2 * (generated::waviness_height_slope(H1, m, -c) - generated::waviness_height_slope(H1, m, c));
+    };
+    s->kinks.push_back(kink);
+  }
+  s->resolution = resolution(highest);
+  s->E = w.E;
+  s->scale = height_scale_;
+  detail::locate_top(*s);
+  model_ = std::move(s);
+}
+
+Surface::Surface(const TwoScaleParams& params)
+    : Surface((validate(params.roughness, "wavecontact::Surface"), params.waviness),
+              {{params.roughness.H2, params.roughness.n}}) {}
+
+Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.params().E) {
+  if (profile.reach() < profile.params().b1) {
+    detail::domain_error("wavecontact::Surface", "x", profile.reach(),
+                         "a profile without a pole on the period; " + profile.params().name +
+                             " has one at this x, where it is unbounded");
+  }
+  const ProfileEvaluator e = profile.evaluator();
+  const std::vector<double> q = profile.parameter_values();
+  auto s = std::make_shared<detail::SurfaceModel>();
+  s->height = [e, q](double x) { return e.height(q.data(), std::cos(x)); };
+  s->slope = [e, q](double x) { return -std::sin(x) * e.height_slope(q.data(), std::cos(x)); };
+  s->height_difference = [e, q](double x, double x0) {
+    return e.height(q.data(), std::cos(x)) - e.height(q.data(), std::cos(x0));
+  };
+  const double E = profile.params().E;
+  if (e.branch.beta > 0) {
+    // The branches' slopes from their g(v) = (E/2) Y'(c) sin x^: (E/2) D'(c) = (g_flank - g_top)/sin x^;
+    // analytic up to the nearest pole of either branch.
+    const auto poles_at = [&q](void (*squares)(const double*, double*), int count) {
+      std::vector<double> tau(static_cast<std::size_t>(count)), cs;
+      if (count > 0) squares(q.data(), tau.data());
+      for (double t : tau) {
+        if (std::isfinite(t) && t != -1) cs.push_back((1 - t) / (1 + t));
+      }
+      return cs;
+    };
+    std::vector<double> poles = poles_at(e.pole_squares, e.pole_count);
+    for (double c : poles_at(e.branch.flank_pole_squares, e.branch.flank_pole_count)) poles.push_back(c);
+    detail::Kink kink;
+    kink.s = e.branch.cosine, kink.angle = std::acos(kink.s);
+    kink.radius = 2;
+    for (double c : poles) kink.radius = std::min(kink.radius, std::fabs(c - kink.s));
+    const auto branch = e.branch;
+    kink.slope_jump = [branch, q, E](double c) {
+      const double x = std::acos(std::clamp(c, -1.0, 1.0)), v = std::tan(x / 2);
+      return (branch.flank_g(q.data(), E, v) - branch.top_g(q.data(), E, v)) / std::sin(x);
+    };
+    s->kinks.push_back(kink);
+  }
+  s->resolution = resolution(e.harmonic);
+  s->E = E;
+  for (int i = 0; i <= 1024; ++i) height_scale_ = std::max(height_scale_, std::fabs(s->height(pi * i / 1024)));
+  s->scale = height_scale_;
+  detail::locate_top(*s);
+  model_ = std::move(s);
+}
+
+double Surface::height(double x) const {
+  detail::require_finite("wavecontact::Surface::height", "x", x);
+  return model_->height(std::fabs(pi * reduce_to_period(x, b1_) / b1_));
+}
+
+}  // namespace wavecontact
