@@ -244,7 +244,8 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
         spread[4000 + static_cast<Eigen::Index>(i)] = references[i].first.x;
       const Eigen::ArrayXd array = wavecontact::pressure(params, a, spread);
       for (std::size_t i = 0; i < references.size(); ++i) {
-        const auto& [p, reference] = references[i];
+        const auto& p = references[i].first;
+        const auto& reference = references[i].second;  // a structured binding cannot be captured (C++17)
         const auto error = [&](double got) {
           return (GiNaC::abs(wavecontact::test::exact(got) - reference) / scale).to_double() / 2.220446049250313e-16;
         };

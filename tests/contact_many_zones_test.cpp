@@ -48,7 +48,7 @@ Surface surface_of(const Case& k) {
 }
 
 Contact check_against_oracle(const Case& k, double tolerance) {
-  const Contact c = solve_contact(surface_of(k), k.P, SolverOptions(tolerance));
+  Contact c = solve_contact(surface_of(k), k.P, SolverOptions(tolerance));
   BOOST_TEST(c.zones_per_period() >= k.least_zones, k.name << ": " << c.zones_per_period() << " zones a period");
   BOOST_TEST(c.error_estimate() <= tolerance, k.name << ": error estimate " << c.error_estimate());
   const test::BemEstimate bem =

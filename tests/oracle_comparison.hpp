@@ -21,7 +21,7 @@ namespace wavecontact::test {
 
 // Eqs. 1-3 over the normalised period: the wave curve and roughness harmonics (H, n).
 inline std::function<double(double)> surface_profile(double H1, double m,
-                                                     std::vector<std::pair<double, int>> harmonics) {
+                                                     const std::vector<std::pair<double, int>>& harmonics) {
   return [=](double x) {
     const double c = std::cos(x);
     double y = H1 * (m + 1) * c / (m * std::fabs(c) + 1);

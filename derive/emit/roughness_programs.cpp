@@ -36,7 +36,7 @@ EmittedFunction roughness_pressure_program(int n) {
   // sum_{j<n} c_j V_j(Cx), c_j = P_{n-1-j}: Clenshaw-Reinsch from j = n-1 down to 0.
   ex b = 0, d = 0;
   for (int j = n - 1; j >= 0; --j) {
-    const ex c = P[n - 1 - j];
+    const ex& c = P[n - 1 - j];
     const GiNaC::realsymbol d_j("d" + std::to_string(j));
     statements.push_back({d_j, c - 2 * sym::Sx() * b + d});
     d = d_j;

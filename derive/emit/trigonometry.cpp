@@ -63,7 +63,7 @@ numeric bounded_sine_tolerance() { return numeric(1, 1L << 55); }
 
 BoundedSine bounded_sine(const std::string& name, const numeric& bound) {
   const WorkingPrecision precision;
-  const numeric pi = GiNaC::ex_to<numeric>(GiNaC::Pi.evalf());
+  numeric pi = GiNaC::ex_to<numeric>(GiNaC::Pi.evalf());
   // sin(pi t)/t as a function of u = t^2.
   const Function sine_over_t = [&](const numeric& u) {
     if (u.is_zero()) return pi;

@@ -261,7 +261,7 @@ ex angle_form_residual(const RootTerm& v_form, const RootTerm& angle_form, bool&
                        const GiNaC::exmap& sample) {
   const ex angle_rational = atoms_in_v_variables(angle_form.rational);
   const ex angle_radicand = atoms_in_v_variables(angle_form.radicand);
-  const ex residual =
+  ex residual =
       (GiNaC::pow(v_form.rational, 2) * v_form.radicand - GiNaC::pow(angle_rational, 2) * angle_radicand).normal();
   const ex point_v = v_form.rational.subs(sample).evalf();
   const ex point_angle = angle_rational.subs(sample).evalf();

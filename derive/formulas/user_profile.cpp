@@ -308,7 +308,7 @@ ex parse(const ProfileSpec& spec, const std::vector<GiNaC::realsymbol>& paramete
   table["Pi"] = GiNaC::Pi;
   for (const auto& p : parameters) table[p.get_name()] = p;
   try {
-    const ex y = parse_bounded_expression(spec.expression, table);
+    ex y = parse_bounded_expression(spec.expression, table);
     checked_order(y, sym::x());
     return y;
   } catch (const InputRefused& e) {

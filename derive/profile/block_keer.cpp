@@ -99,7 +99,7 @@ ex exp_i(const ex& v) { return (1 + GiNaC::I * v) / (1 - GiNaC::I * v); }
 
 ex in_half_angle_tangent(const ex& y) {
   HalfAngleSubstitution substitute(y);
-  const ex result = substitute(y);
+  ex result = substitute(y);
   const ex nd = result.normal().numer_denom();
   if (result.has(sym::x()) || !nd.op(0).is_polynomial(sym::v()) || !nd.op(1).is_polynomial(sym::v())) {
     std::ostringstream os;

@@ -10,9 +10,9 @@ namespace {
 
 // Every a carrying the load P, with its stability and admissibility.
 std::vector<wavecontact::Equilibrium> equilibria(const ProfileOptions& profile, double P) {
-  const std::vector<wavecontact::Equilibrium> roots = profile.has_roughness()
-                                                          ? wavecontact::two_scale_half_widths(profile.two_scale(), P)
-                                                          : wavecontact::LoadCurve(profile.params()).equilibria(P);
+  std::vector<wavecontact::Equilibrium> roots = profile.has_roughness()
+                                                    ? wavecontact::two_scale_half_widths(profile.two_scale(), P)
+                                                    : wavecontact::LoadCurve(profile.params()).equilibria(P);
   if (roots.empty()) {
     throw UsageError("no single contact zone 0 < a < b1 carries P = " + all_digits(P) +
                      " (solve without --single-zone gives the contact)");

@@ -28,7 +28,7 @@ void require_admissible(const Profile& profile, double a) {
 
 // Every half-width carrying P, with stability and admissibility (UsageError if none).
 std::vector<Equilibrium> user_profile_equilibria(const Profile& profile, double P) {
-  const std::vector<Equilibrium> roots = LoadCurve(profile).equilibria(P);
+  std::vector<Equilibrium> roots = LoadCurve(profile).equilibria(P);
   if (roots.empty()) {
     throw UsageError("no single contact zone 0 < a < " + all_digits(profile.reach()) + " carries P = " + all_digits(P) +
                      " (solve without --single-zone gives the contact)");

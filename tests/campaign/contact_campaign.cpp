@@ -45,7 +45,7 @@ Sweep draw(const Settings& s, int k) {
   const int count = 1 + static_cast<int>(4 * unit(random));
   double slopes = 0;
   while (static_cast<int>(w.harmonics.size()) < count) {
-    const int n = 2 * static_cast<int>(std::exp(unit(random) * std::log(s.max_n / 2.0)) + 0.5);
+    const int n = 2 * static_cast<int>(std::lround(std::exp(unit(random) * std::log(s.max_n / 2.0))));
     bool taken = false;
     for (const wavecontact::Harmonic& h : w.harmonics) taken = taken || h.n == n;
     if (taken || n < 2) continue;

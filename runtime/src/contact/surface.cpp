@@ -98,8 +98,8 @@ Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.
                          "a profile without a pole on the period; " + profile.params().name +
                              " has one at this x, where it is unbounded");
   }
-  const ProfileEvaluator e = profile.evaluator();
-  const std::vector<double> q = profile.parameter_values();
+  const ProfileEvaluator& e = profile.evaluator();
+  const std::vector<double>& q = profile.parameter_values();
   auto s = std::make_shared<detail::SurfaceModel>();
   s->height = [e, q](double x) { return e.height(q.data(), std::cos(x)); };
   s->slope = [e, q](double x) { return -std::sin(x) * e.height_slope(q.data(), std::cos(x)); };

@@ -59,10 +59,10 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
   std::vector<std::pair<double, double>> regions;
   double previous = 0;
   for (std::size_t k = 0; k < s.zone_count(); ++k) {
-    regions.push_back({previous, s.zone(k).a});
+    regions.emplace_back(previous, s.zone(k).a);
     previous = s.zone(k).b;
   }
-  regions.push_back({previous, pi});
+  regions.emplace_back(previous, pi);
   const double spacing = surface.resolution / 8;
   for (const auto& [lo, hi] : regions) {
     if (!(hi > lo)) continue;
