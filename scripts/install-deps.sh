@@ -12,7 +12,8 @@ packages=(
   libfftw3-dev                     # runtime/: the contact's grid guess; tests/: the oracle
   libcli11-dev                     # the wavecontact CLI
   gnuplot-nox                      # reproduce: PNG plots
-  clang-14 libclang-rt-14-dev      # fuzzing (libFuzzer) and sanitizers
+  clang-14 libclang-rt-14-dev      # the sanitize presets and fuzzing (libFuzzer)
+  clang-format-14 clang-tidy-14    # scripts/check_format.sh (CI), scripts/tidy.sh
   libbenchmark-dev python3-sympy   # bench/ (Google Benchmark; SymPy is the baseline)
   pybind11-dev python3-dev python3-numpy  # python/: the extension module, for Debian's python3
   python3-pytest python3-matplotlib       # tests/python, examples/sweep.py
