@@ -11,8 +11,8 @@ figures are missing from the run is left as it was, and the script says so.
 import argparse
 import json
 import os
-import re
-import sys
+
+import doc_tables
 
 
 class Results:
@@ -24,6 +24,7 @@ class Results:
         runs = data["benchmarks"]
         self.by_name = {b["name"]: b for b in runs if b.get("run_type") != "aggregate"}
         self.by_name.update({b["run_name"]: b for b in runs if b.get("aggregate_name") == "median"})
+        self.python_ns = None  # bench/python_pressure.py's figure, ns a point, where it ran
 
     def get(self, prefix):
         """The figure named `prefix`, or `prefix/...` (Google Benchmark appends /real_time,
@@ -55,7 +56,9 @@ def duration(seconds):
         return f"{seconds:.3g} s"
     if seconds >= 1e-3:
         return f"{seconds * 1e3:.3g} ms"
-    return f"{seconds * 1e6:.3g} µs"
+    if seconds >= 1e-6:
+        return f"{seconds * 1e6:.3g} µs"
+    return f"{seconds * 1e9:.3g} ns"
 
 
 # ---- the console report -------------------------------------------------------------------
@@ -163,34 +166,85 @@ def contact_solves_table(r):
     return lines
 
 
-TABLES = {"contact-many-zones": many_zones_table, "contact-solves": contact_solves_table}
+def performance_table(r):
+    """docs/performance.md: each figure beside its baseline in the same run, with its target.
+    A row: (figure, ours in seconds, baseline, the baseline's seconds, target), the target a
+    pair (text, test of ours and the baseline's seconds) or None."""
+    per_point = lambda name: None if r.ns_per_item(name) is None else r.ns_per_item(name) * 1e-9
+    wave = per_point("BM_waviness_pressure_generated/1000000")
+    python = None if r.python_ns is None else r.python_ns * 1e-9
+    inversion = "numerical inversion at equal accuracy"
+    quadrature = "long-double quadrature of eq. 12"
+    rows = [("waviness pressure, array API, 10⁶ points, one thread, per point", wave,
+             "the same formula written plainly, -O3 -ffast-math (bench/plain_kernel.cpp)",
+             per_point("BM_waviness_pressure_plain_fast_math/1000000"), ("≤ 2× its time", lambda t, b: t <= 2 * b)),
+            ("", wave, "the same formula, atoms from scalar libm", per_point("BM_waviness_pressure_scalar_libm/1000000"),
+             None),
+            ("", wave, inversion, per_point("BM_waviness_pressure_numerical/10000"), None),
+            ("", wave, "GiNaC print_csrc, no CSE", per_point("BM_waviness_pressure_no_cse/1000000"), None),
+            ("the same, 10⁶ points on 2 threads", r.seconds("BM_waviness_pressure_threads/2"), "1 thread",
+             r.seconds("BM_waviness_pressure_threads/1"), ("≥ 1.8×", lambda t, b: b >= 1.8 * t)),
+            ("the same from Python (bench/python_pressure.py), per point", python, "the C++ array API", wave,
+             ("within 1.2×", lambda t, b: t <= 1.2 * b))]
+    targets = {16: ("≤ 4 ns", lambda t, b: t <= 4e-9), 256: ("≤ 25 ns, ≥ 50×", lambda t, b: t <= 25e-9 and b >= 50 * t)}
+    for n in (16, 64, 256):
+        ours = per_point(f"BM_roughness_pressure_generated/{n}")
+        rows += [(f"roughness pressure, array API, n = {n}, per point", ours, inversion,
+                  per_point(f"BM_roughness_pressure_numerical/{n}"), targets.get(n)),
+                 ("", ours, "the point API, per call", per_point(f"BM_roughness_pressure_point/{n}"), None)]
+    rows += [("k₁…k₁₂₈ (eq. 18)", r.seconds("BM_kcoefficients/128"), "SymPy (bench/sympy_kcoef.py)",
+              r.seconds("BM_sympy_kcoefficients/128"), ("≥ 20×", lambda t, b: b >= 20 * t)),
+             ("pressure beyond b1/2, a = 0.75 b1, m = 2: array of 10⁴ points, per point",
+              per_point("BM_pressure_beyond_half_array/10000"), quadrature,
+              per_point("BM_pressure_beyond_half_quadrature"), ("≤ 200 ns", lambda t, b: t <= 200e-9)),
+             ("the same point by point", per_point("BM_pressure_beyond_half"), quadrature,
+              per_point("BM_pressure_beyond_half_quadrature"), None),
+             ("the same within 10⁻² … 10⁻¹² of the kink", per_point("BM_pressure_beyond_half_near_kink"), quadrature,
+              per_point("BM_pressure_beyond_half_near_kink_quadrature"), None)]
+    for label, name, bound in (("load P(a), a ≤ b1/2", "BM_load", None),
+                               ("load P(a), beyond b1/2", "BM_load_beyond_half", None),
+                               ("inverse a(P), a ≤ b1/2", "BM_single_asperity_half_width", 200e-9),
+                               ("every zone for P (LoadCurve::equilibria)", "BM_equilibria", None),
+                               ("LoadCurve itself", "BM_load_curve", None),
+                               ("pa/p* against 2a/L1, 1000 points", "BM_pa_over_pstar_curve_1000", None),
+                               ("k₁…k₁₀₂₄", "BM_kcoefficients/1024", 1.0),
+                               ("full regeneration of generated/", "BM_regenerate_default", 60.0)):
+        rows.append((label, r.seconds(name), "", None,
+                     None if bound is None else (f"≤ {duration(bound)}", lambda t, b, bound=bound: t <= bound)))
+    lines = ["| figure | ours | baseline | its time | ratio | target |", "|---|---|---|---|---|---|"]
+    for label, ours, base_label, base, target in rows:
+        if ours is None or (base_label and base is None):
+            return None
+        ratio = f"{base / ours:.3g}×" if base_label else ""
+        verdict = f"{target[0]} ({'met' if target[1](ours, base) else 'missed'})" if target else ""
+        lines.append(f"| {label} | {duration(ours)} | {base_label} | {duration(base) if base_label else ''} | "
+                     f"{ratio} | {verdict} |")
+    return lines
+
+
+def derive_times_table(r):
+    """docs/performance.md: wavecontact-derive --profile end to end ("now") beside the closed
+    forms alone through the engine's partial fractions ("whole"), up to order 32."""
+    lines = ["| order k | H cos(k x): whole → now | ratio | H cos(x)^k: whole → now | ratio |", "|---|---|---|---|---|"]
+    for k in (8, 16, 32, 64, 128, 256):
+        cells = []
+        for shape in ("harmonic", "power"):
+            now, whole = r.seconds(f"BM_derive_profile_{shape}/{k}"), r.seconds(f"BM_derive_whole_{shape}/{k}")
+            if now is None:
+                return None
+            cells += [f"{duration(whole)} → {duration(now)}", f"{whole / now:.3g}×"] if whole else [
+                f"→ {duration(now)}", ""]
+        lines.append(f"| {k} | " + " | ".join(cells) + " |")
+    return lines
+
+
+TABLES = {"contact-many-zones": many_zones_table, "contact-solves": contact_solves_table,
+          "performance": performance_table, "derive-times": derive_times_table}
 
 
 def write_docs(r, docs):
-    for file in sorted(os.listdir(docs)):
-        if not file.endswith(".md"):
-            continue
-        path = os.path.join(docs, file)
-        text = open(path).read()
-        changed = text
-        for name in re.findall(r"<!-- bench:([a-z0-9-]+) -->", text):
-            if name not in TABLES:
-                sys.exit(f"bench_report: {path}: no table named {name!r} (known: {', '.join(sorted(TABLES))})")
-            lines = TABLES[name](r)
-            if lines is None:
-                print(f"bench_report: {path}: table {name} left as it was (the run lacks its figures)")
-                continue
-            block = "\n".join([f"<!-- bench:{name} -->", f"{r.run_name()}:", ""] + lines + [f"<!-- /bench:{name} -->"])
-            pattern = re.compile(rf"<!-- bench:{name} -->.*?<!-- /bench:{name} -->", re.S)
-            if not pattern.search(changed):
-                sys.exit(f"bench_report: {path}: table {name} has no end marker <!-- /bench:{name} -->")
-            changed = pattern.sub(lambda _: block, changed)
-            print(f"bench_report: {path}: table {name} written")
-        if changed != text:
-            tmp = path + ".tmp"
-            with open(tmp, "w") as f:
-                f.write(changed)
-            os.replace(tmp, path)
+    doc_tables.rewrite(docs, "bench", {name: (lambda table=table: table(r)) for name, table in TABLES.items()},
+                       r.run_name())
 
 
 def main():
@@ -200,10 +254,9 @@ def main():
     parser.add_argument("--docs", help="rewrite the tables of the .md files in this folder")
     args = parser.parse_args()
     r = Results(args.results)
-    python_ns = None
     if args.python and os.path.exists(args.python):
-        python_ns = float(open(args.python).read().split()[1])
-    print_report(r, python_ns)
+        r.python_ns = float(open(args.python).read().split()[1])
+    print_report(r, r.python_ns)
     if args.docs:
         write_docs(r, args.docs)
 

@@ -67,3 +67,24 @@ def test_an_unknown_table_is_refused(tmp_path, source_dir):
     r = run(source_dir, results, docs)
     assert r.returncode != 0
     assert "no-such-table" in r.stderr
+
+
+def test_derivation_times_table_gives_the_ratio_where_both_ran(tmp_path, source_dir):
+    docs = tmp_path / "docs"
+    docs.mkdir()
+    page = docs / "performance.md"
+    page.write_text("<!-- bench:derive-times -->\n<!-- /bench:derive-times -->\n")
+    runs = []
+    for k in (8, 16, 32, 64, 128, 256):
+        runs += [benchmark(f"BM_derive_profile_harmonic/{k}/iterations:1", 0.001 * k),
+                 benchmark(f"BM_derive_profile_power/{k}/iterations:1", 0.0005 * k)]
+        if k <= 32:
+            runs += [benchmark(f"BM_derive_whole_harmonic/{k}/iterations:1", 0.1 * k),
+                     benchmark(f"BM_derive_whole_power/{k}/iterations:1", 0.1 * k)]
+    results = tmp_path / "results.json"
+    write_run(results, runs)
+    r = run(source_dir, results, docs)
+    assert r.returncode == 0, r.stderr
+    text = page.read_text()
+    assert "| 8 | 800 ms → 8 ms | 100× | 800 ms → 4 ms | 200× |" in text
+    assert "| 256 | → 256 ms |  | → 128 ms |  |" in text
