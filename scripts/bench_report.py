@@ -211,11 +211,11 @@ def performance_table(r):
                                ("full regeneration of generated/", "BM_regenerate_default", 60.0)):
         rows.append((label, r.seconds(name), "", None,
                      None if bound is None else (f"≤ {duration(bound)}", lambda t, b, bound=bound: t <= bound)))
-    lines = ["| figure | ours | baseline | its time | ratio | target |", "|---|---|---|---|---|---|"]
+    lines = ["| figure | ours | baseline | its time | baseline / ours | target |", "|---|---|---|---|---|---|"]
     for label, ours, base_label, base, target in rows:
         if ours is None or (base_label and base is None):
             return None
-        ratio = f"{base / ours:.3g}×" if base_label else ""
+        ratio = "" if not base_label else f"{base / ours:,.0f}×" if base >= 100 * ours else f"{base / ours:.3g}×"
         verdict = f"{target[0]} ({'met' if target[1](ours, base) else 'missed'})" if target else ""
         lines.append(f"| {label} | {duration(ours)} | {base_label} | {duration(base) if base_label else ''} | "
                      f"{ratio} | {verdict} |")
