@@ -6,7 +6,7 @@
 
 #include "core/symbols.hpp"
 #include "engine/angle_form.hpp"
-#include "formulas/waviness.hpp"
+#include "formulas/wave_curve.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 2) {

@@ -17,7 +17,7 @@
 #include <boost/math/special_functions/cos_pi.hpp>
 
 #include "formulas/user_profile.hpp"
-#include "formulas/waviness.hpp"
+#include "formulas/wave_curve.hpp"
 #include "high_precision.hpp"
 #include "isa_under_test.hpp"
 #include "wavecontact/profile.hpp"

@@ -11,7 +11,7 @@
 #include "engine/angle_form.hpp"
 #include "formulas/full_contact.hpp"
 #include "formulas/user_profile.hpp"
-#include "formulas/waviness.hpp"
+#include "formulas/wave_curve.hpp"
 
 using namespace wavecontact::derive;
 using GiNaC::ex;

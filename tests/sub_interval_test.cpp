@@ -22,7 +22,7 @@
 #include "engine/hilbert.hpp"
 #include "engine/radicals.hpp"
 #include "engine/sub_interval.hpp"
-#include "formulas/waviness.hpp"
+#include "formulas/wave_curve.hpp"
 #include "tanh_sinh_reference.hpp"
 
 using namespace wavecontact::derive;

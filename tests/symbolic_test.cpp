@@ -12,7 +12,7 @@
 #include "core/canonical.hpp"
 #include "core/symbols.hpp"
 #include "engine/hilbert.hpp"
-#include "formulas/waviness.hpp"
+#include "formulas/wave_curve.hpp"
 #include "high_precision.hpp"
 #include "profile/block_keer.hpp"
 

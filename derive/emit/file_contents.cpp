@@ -10,7 +10,7 @@
 #include "emit/shared_pieces.hpp"
 #include "emit/trigonometry.hpp"
 #include "formulas/roughness.hpp"
-#include "formulas/waviness.hpp"
+#include "formulas/wave_curve.hpp"
 
 namespace wavecontact::derive {
 

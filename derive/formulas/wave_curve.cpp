@@ -1,4 +1,4 @@
-#include "waviness.hpp"
+#include "wave_curve.hpp"
 
 #include "core/symbols.hpp"
 #include "engine/hilbert.hpp"
