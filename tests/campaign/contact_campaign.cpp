@@ -119,10 +119,12 @@ int main(int argc, char** argv) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       slowest = std::max(slowest, seconds), total += seconds;
       int zones = 0, bad = 0;
+      double estimate = 0;  // the largest of the sweep
       const bool full = sweep.back().full_contact();
       for (const wavecontact::Contact& c : sweep) {
         ++contacts;
         zones = std::max(zones, c.zones_per_period());
+        estimate = std::max(estimate, c.error_estimate());
         if (c.error_estimate() > s.tolerance) ++missed;
         const auto [worst, at] = violation(c, range, highest);
         if (worst > 1e-7) {
@@ -132,8 +134,9 @@ int main(int argc, char** argv) {
       }
       violations += bad;
       most_zones = std::max(most_zones, zones);
-      std::printf("sweep %d: %s, %zu loads, up to %d zones%s, %.2f s%s\n", k, surface.c_str(), w.loads.size(), zones,
-                  full ? ", full contact at the last" : "", seconds, bad ? ", VIOLATED" : "");
+      std::printf("sweep %d: %s, %zu loads, up to %d zones%s, estimates up to %.1e, %.2f s%s\n", k, surface.c_str(),
+                  w.loads.size(), zones, full ? ", full contact at the last" : "", estimate, seconds,
+                  bad ? ", VIOLATED" : "");
     } catch (const std::exception& e) {
       ++stalls;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -16,6 +16,10 @@ namespace {
 
 constexpr double tiny = std::numeric_limits<double>::min();
 
+// The scaled residual a zone's rows reach at the rounding of the sums they are formed from
+// (layout()): below Newton's 1e-10, where it stops at its first iteration that does not halve.
+constexpr double rounding_reach = 1e-11;
+
 // The angles of the zone's Chebyshev nodes.
 std::vector<double> node_angles(const ZoneGeometry& g, int count) { return g.angles_of(chebyshev::nodes(count)); }
 
@@ -36,6 +40,17 @@ SystemLayout ZoneSystem::layout(const Configuration& c, bool ends_fixed) const {
   SystemLayout L;
   std::size_t at = 0;
   double largest_row = 0;
+  // A zone's T_0 row is a sum of |C| + (E/2)|y - y_top| + sum_l |Psi_l|, with |Psi_l| at most
+  // h_l sum |d_l| (|log h_l| + 2) (refinement.cpp's rounding_estimate takes each distance
+  // instead), and cannot fall below 8 eps of it. A zone whose own potential is smaller than
+  // that floor over rounding_reach (one of 1e-4 of the half period or less, beside large
+  // ones) has its rows scaled by the floor instead: their rounding is then rounding_reach.
+  double others = 0;
+  for (const ZoneUnknowns& z : c.zones) {
+    double magnitude = 0;
+    for (double v : z.d) magnitude += std::fabs(v);
+    others += z.geometry.h * magnitude * (std::fabs(std::log(z.geometry.h)) + 2);
+  }
   for (const ZoneUnknowns& z : c.zones) {
     SystemLayout::Zone lz;
     lz.at = at;
@@ -51,7 +66,10 @@ SystemLayout ZoneSystem::layout(const Configuration& c, bool ends_fixed) const {
     lz.b_rate = (lz.b_upper ? 1 : -1) * lz.end_scale / std::sin(z.geometry.b);
     double magnitude = 0;
     for (double v : z.d) magnitude += std::fabs(v);
-    lz.row_scale = z.geometry.h * std::max(magnitude, tiny);
+    const double sum =
+        std::fabs(c.C) + surface_.E / 2 * std::fabs(surface_.depth((z.geometry.a + z.geometry.b) / 2)) + others;
+    const double floor = 8 * std::numeric_limits<double>::epsilon() * sum / rounding_reach;
+    lz.row_scale = std::max(z.geometry.h * std::max(magnitude, tiny), floor);
     largest_row = std::max(largest_row, lz.row_scale);
     at += static_cast<std::size_t>(lz.block());
     L.zones.push_back(lz);

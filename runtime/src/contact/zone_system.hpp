@@ -28,7 +28,7 @@ namespace wavecontact::detail {
 // half (x^ <= pi/2) and 1 + s in the lower, in units of the zone's half-width h in s. A
 // zone's coefficients are held as h d_j (pi h d_0 is its load: as a zone shrinks, d grows
 // like 1/h, h d stays), the rows as potentials, both in units of the zone's own potential's
-// magnitude h sum |d_j| (row_scale). A zone's block holds its free ends then its
+// magnitude h sum |d_j|, or of its rows' rounding where that is larger (row_scale, layout()). A zone's block holds its free ends then its
 // coefficients (unknowns), its collocation rows then its end conditions (rows); C and the
 // load row last.
 struct SystemLayout {
