@@ -39,6 +39,45 @@ std::vector<double> plus(std::vector<double> x, double lambda, const std::vector
 // a thousand): Newton's method stops at the first iteration that does not halve it.
 constexpr double rounding_reached = 1e-10;
 
+// The row of the largest residual, by zone, on stderr.
+void trace_iteration(int iteration, double residual, const std::vector<double>& F, const SystemLayout& L) {
+  const std::size_t row = static_cast<std::size_t>(
+      std::max_element(F.begin(), F.end(), [](double u, double v) { return std::fabs(u) < std::fabs(v); }) - F.begin());
+  std::size_t zone = 0;
+  while (zone + 1 < L.zones.size() && L.zones[zone + 1].at <= row) ++zone;
+  std::fprintf(stderr, "wavecontact trace:   iteration %d: residual %.3g (row %zu of zone %zu of %zu)\n", iteration,
+               residual, row - (L.zones.empty() ? 0 : L.zones[zone].at), zone, L.zones.size());
+}
+
+// The damping of a Newton step from `now` to `full`: the largest fraction lambda <= 1 of it
+// with which every stretch between consecutive ends of [0, a_1, b_1, ..., pi] keeps a tenth
+// of its length, the stretch that limits it, and that stretch's length and its shrink under
+// the full step.
+struct Damping {
+  double lambda = 1;
+  std::size_t limiting = 0;
+  double length = 0, shrink = 0;
+  bool overshoots() const { return lambda < 1 && shrink >= length; }  // the full step closes it
+};
+
+Damping damping(const Configuration& now, const Configuration& full) {
+  std::vector<double> ends{0}, moved{0};
+  for (std::size_t k = 0; k < now.zones.size(); ++k) {
+    ends.push_back(now.zones[k].geometry.a), ends.push_back(now.zones[k].geometry.b);
+    moved.push_back(full.zones[k].geometry.a), moved.push_back(full.zones[k].geometry.b);
+  }
+  ends.push_back(pi), moved.push_back(pi);
+  Damping d;
+  for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
+    const double length = ends[e + 1] - ends[e];
+    const double shrink = length - (moved[e + 1] - moved[e]);
+    if (length > 0 && shrink > 0 && d.lambda * shrink > 0.9 * length) d.lambda = 0.9 * length / shrink, d.limiting = e;
+  }
+  d.length = ends[d.limiting + 1] - ends[d.limiting];
+  d.shrink = d.length - (moved[d.limiting + 1] - moved[d.limiting]);
+  return d;
+}
+
 }  // namespace
 
 std::vector<double> ZoneSystem::linear_solve(const Linearisation& at, const std::vector<double>& rhs,
@@ -87,15 +126,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     result.residual = largest(at.F);
     if (checkpoint) checkpoint(result.residual);
     if (!(result.residual < std::numeric_limits<double>::infinity())) return finish(Outcome::failed);
-    if (tracing()) {
-      const std::size_t row = static_cast<std::size_t>(
-          std::max_element(at.F.begin(), at.F.end(), [](double u, double v) { return std::fabs(u) < std::fabs(v); }) -
-          at.F.begin());
-      std::size_t zone = 0;
-      while (zone + 1 < L.zones.size() && L.zones[zone + 1].at <= row) ++zone;
-      std::fprintf(stderr, "wavecontact trace:   iteration %d: residual %.3g (row %zu of zone %zu of %zu)\n", iteration,
-                   result.residual, row - (L.zones.empty() ? 0 : L.zones[zone].at), zone, L.zones.size());
-    }
+    if (tracing()) trace_iteration(iteration, result.residual, at.F, L);
     if (result.residual < tolerance) return finish(Outcome::converged);
     if (result.residual < lowest_residual) lowest = at.c, lowest_residual = result.residual;
     if (result.residual < 0.5 * best) {
@@ -107,64 +138,58 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       result.residual = lowest_residual;
       return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
-    // The linear solve's tolerance falls like the root of the residual: superlinear
-    // convergence without over-solving the first, far steps (Eisenstat and Walker).
-    std::vector<double> minus_F(at.F.size());
-    for (std::size_t i = 0; i < at.F.size(); ++i) minus_F[i] = -at.F[i];
-    const double forcing = std::min(1e-2, std::max(1e-6, 0.1 * std::sqrt(result.residual)));
-    const std::vector<double> step = linear_solve(at, minus_F, forcing);
+    const std::vector<double> step = newton_step(at, result.residual);
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
-    const Configuration full = unpack(plus(at.X, 1, step), L);
-    std::vector<double> ends{0}, moved{0};
-    for (std::size_t k = 0; k < at.c.zones.size(); ++k) {
-      ends.push_back(at.c.zones[k].geometry.a), ends.push_back(at.c.zones[k].geometry.b);
-      moved.push_back(full.zones[k].geometry.a), moved.push_back(full.zones[k].geometry.b);
-    }
-    ends.push_back(pi), moved.push_back(pi);
-    double lambda = 1;
-    std::size_t limiting = 0;
-    for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
-      const double length = ends[e + 1] - ends[e];
-      const double shrink = length - (moved[e + 1] - moved[e]);
-      if (length > 0 && shrink > 0 && lambda * shrink > 0.9 * length) lambda = 0.9 * length / shrink, limiting = e;
-    }
+    const Damping damped = damping(at.c, unpack(plus(at.X, 1, step), L));
     // A full step that would close the stretch twice running within a thousandth of a
     // resolution, or a stretch already next to nothing, is an event: a gap between zones
     // closing, a zone reaching the top or the valley, or a zone vanishing. (Within a whole
     // resolution, gaps that stay open but narrow, as between the pieces of a zone cut at a
     // tension, were closed, and the cut undone, until the changes ran out.)
-    const double length = ends[limiting + 1] - ends[limiting];
-    const double shrink = length - (moved[limiting + 1] - moved[limiting]);
-    const bool overshoots = lambda < 1 && shrink >= length;
     const double near = 1e-3 * surface_.resolution;
-    if ((overshoots && closing == limiting && length < near) || (lambda < 1 && length - lambda * shrink < 1e-9 * pi)) {
-      result.stretch = limiting;
+    if ((damped.overshoots() && closing == damped.limiting && damped.length < near) ||
+        (damped.lambda < 1 && damped.length - damped.lambda * damped.shrink < 1e-9 * pi)) {
+      result.stretch = damped.limiting;
       return finish(Outcome::stretch_closes);
     }
-    closing = overshoots ? limiting : std::numeric_limits<std::size_t>::max();
-    const double lambda_limit = lambda;
-    // Backtracking while the residual's 2-norm grows (the merit function whose decrease a
-    // Newton step guarantees; the largest residual need not fall with it).
-    const double merit = squares(at.F);
-    Linearisation next;
-    for (int halving = 0;; ++halving, lambda /= 2) {
-      next.layout = L;
-      next.X = plus(at.X, lambda, step);
-      next.c = unpack(next.X, L);
-      next.F = residual(next.c, L, &next.external_slope);
-      // Within rounding, the merit function's changes are rounding too: no backtracking.
-      if (squares(next.F) < (1 - 1e-4 * lambda) * merit || result.residual < rounding_reached || halving == 8) break;
-    }
+    closing = damped.overshoots() ? damped.limiting : std::numeric_limits<std::size_t>::max();
+    Linearisation next = backtrack(at, step, damped.lambda, result.residual < rounding_reached);
     if (tracing()) {
-      std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", lambda,
-                   limiting, lambda_limit);
+      std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", next.step,
+                   damped.limiting, damped.lambda);
     }
     at = std::move(next);
   }
   result.residual = largest(at.F);
   return finish(Outcome::failed);
+}
+
+std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double residual) const {
+  // The linear solve's tolerance falls like the root of the residual: superlinear
+  // convergence without over-solving the first, far steps (Eisenstat and Walker).
+  std::vector<double> minus_F(at.F.size());
+  for (std::size_t i = 0; i < at.F.size(); ++i) minus_F[i] = -at.F[i];
+  const double forcing = std::min(1e-2, std::max(1e-6, 0.1 * std::sqrt(residual)));
+  return linear_solve(at, minus_F, forcing);
+}
+
+ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const std::vector<double>& step, double lambda,
+                                                bool at_rounding) const {
+  // Halving while the residual's 2-norm grows (the merit function whose decrease a Newton
+  // step guarantees; the largest residual need not fall with it). Within rounding, the merit
+  // function's changes are rounding too: no backtracking.
+  const double merit = squares(at.F);
+  Linearisation next;
+  for (int halving = 0;; ++halving, lambda /= 2) {
+    next.layout = at.layout;
+    next.X = plus(at.X, lambda, step);
+    next.c = unpack(next.X, at.layout);
+    next.F = residual(next.c, at.layout, &next.external_slope);
+    next.step = lambda;
+    if (squares(next.F) < (1 - 1e-4 * lambda) * merit || at_rounding || halving == 8) return next;
+  }
 }
 
 Configuration ZoneSystem::perturbed(const Configuration& c, const std::vector<double>& shift) const {

@@ -28,9 +28,9 @@ namespace wavecontact::detail {
 // half (x^ <= pi/2) and 1 + s in the lower, in units of the zone's half-width h in s. A
 // zone's coefficients are held as h d_j (pi h d_0 is its load: as a zone shrinks, d grows
 // like 1/h, h d stays), the rows as potentials, both in units of the zone's own potential's
-// magnitude h sum |d_j|, or of its rows' rounding where that is larger (row_scale, layout()). A zone's block holds its free ends then its
-// coefficients (unknowns), its collocation rows then its end conditions (rows); C and the
-// load row last.
+// magnitude h sum |d_j|, or of its rows' rounding where that is larger (row_scale, layout()).
+// A zone's block holds its free ends then its coefficients (unknowns), its collocation rows
+// then its end conditions (rows); C and the load row last.
 struct SystemLayout {
   struct Zone {
     std::size_t at = 0;  // first unknown (= first row) of the zone's block
@@ -123,8 +123,16 @@ class ZoneSystem {
     SystemLayout layout;
     std::vector<double> X, F;
     std::vector<std::vector<double>> external_slope;
+    double step = 1;  // the fraction of Newton's step that reached it
   };
   Linearisation linearise(Configuration c, bool ends_fixed) const;
+  // Newton's step s = -J^-1 F at `at`, whose largest scaled residual is `residual`, by
+  // linear_solve to a tolerance that falls with the residual.
+  std::vector<double> newton_step(const Linearisation& at, double residual) const;
+  // The point lambda s from `at` along Newton's step s, lambda halved up to 8 times while the
+  // residual's 2-norm does not fall (not at all at the rounding floor).
+  Linearisation backtrack(const Linearisation& at, const std::vector<double>& step, double lambda,
+                          bool at_rounding) const;
   // J s = rhs at `at`, to the relative tolerance, by preconditioned GMRES.
   std::vector<double> linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance) const;
 
