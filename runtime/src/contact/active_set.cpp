@@ -16,9 +16,11 @@ namespace wavecontact::detail {
 
 namespace {
 
-constexpr double working_tail = 1e-9;    // of a zone's coefficients: beyond, more nodes
-constexpr double cut_margin = 0.1;       // of a zone's width, left out around a cut
-constexpr double shortest_piece = 0.02;  // of a zone's width: a shorter piece is dropped
+constexpr double working_tail = 1e-9;  // of a zone's coefficients: beyond, more nodes
+// Of a zone's width, or of the resolution (half the shortest wavelength) if that is less: a
+// zone over many asperities keeps the asperities beside a cut.
+constexpr double cut_margin = 0.1;       // left out around a cut
+constexpr double shortest_piece = 0.02;  // a shorter piece is dropped
 
 // At least the nodes a zone's width asks for: four a half wavelength of the shortest harmonic
 // on top of the 16 of a cap, so that the density of a zone that spans several asperities is
@@ -96,7 +98,7 @@ void open_zones(Configuration& c, const std::vector<Penetration>& penetrations, 
 
 // Each zone with a negative pressure is cut at every such point: the pieces around the cuts,
 // less a margin, those long enough kept (a piece at the top or the valley keeps it).
-void cut_zones(Configuration& c, const std::vector<Tension>& tensions) {
+void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double resolution) {
   for (std::size_t k = c.zones.size(); k-- > 0;) {
     std::vector<double> cuts;
     for (const Tension& t : tensions) {
@@ -105,13 +107,14 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions) {
     if (cuts.empty()) continue;
     std::sort(cuts.begin(), cuts.end());
     const ZoneUnknowns zone = c.zones[k];
-    const double a = zone.geometry.a, b = zone.geometry.b, margin = cut_margin * (b - a);
+    const double a = zone.geometry.a, b = zone.geometry.b, scale = std::min(b - a, resolution);
+    const double margin = cut_margin * scale;
     c.zones.erase(c.zones.begin() + static_cast<std::ptrdiff_t>(k));
     double lo = a;
     cuts.push_back(b + margin);  // the last piece ends at b
     for (double x : cuts) {
       const double hi = std::min(x - margin, b);
-      if (hi - lo > shortest_piece * (b - a)) insert_zone(c, zone_of(lo, hi, zone.d.size()));
+      if (hi - lo > shortest_piece * scale) insert_zone(c, zone_of(lo, hi, zone.d.size()));
       lo = std::max(x + margin, a);
     }
   }
@@ -178,7 +181,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         }
       }
       if (v.tensions.empty() && v.penetrations.empty()) return {std::move(c), {}};
-      cut_zones(c, v.tensions);
+      cut_zones(c, v.tensions, surface.resolution);
       if (v.tensions.empty()) open_zones(c, v.penetrations, surface.resolution);
       if (c.zones.empty()) return {std::nullopt, "every zone was cut away"};
     }
