@@ -97,7 +97,8 @@ void open_zones(Configuration& c, const std::vector<Penetration>& penetrations, 
 }
 
 // Each zone with a negative pressure is cut at every such point: the pieces around the cuts,
-// less a margin, those long enough kept (a piece at the top or the valley keeps it).
+// less a margin, those long enough kept (a piece at the top or the valley keeps it), each
+// with its share of the zone's nodes.
 void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double resolution) {
   for (std::size_t k = c.zones.size(); k-- > 0;) {
     std::vector<double> cuts;
@@ -114,7 +115,9 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double re
     cuts.push_back(b + margin);  // the last piece ends at b
     for (double x : cuts) {
       const double hi = std::min(x - margin, b);
-      if (hi - lo > shortest_piece * scale) insert_zone(c, zone_of(lo, hi, zone.d.size()));
+      const auto share = static_cast<std::size_t>(std::ceil(zone.d.size() * (hi - lo) / (b - a)));
+      if (hi - lo > shortest_piece * scale)
+        insert_zone(c, zone_of(lo, hi, std::max<std::size_t>(share, working_nodes)));
       lo = std::max(x + margin, a);
     }
   }
