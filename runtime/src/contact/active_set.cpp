@@ -115,9 +115,10 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double re
     cuts.push_back(b + margin);  // the last piece ends at b
     for (double x : cuts) {
       const double hi = std::min(x - margin, b);
-      const auto share = static_cast<std::size_t>(std::ceil(zone.d.size() * (hi - lo) / (b - a)));
-      if (hi - lo > shortest_piece * scale)
+      if (hi - lo > shortest_piece * scale) {
+        const auto share = static_cast<std::size_t>(std::ceil(zone.d.size() * (hi - lo) / (b - a)));
         insert_zone(c, zone_of(lo, hi, std::max<std::size_t>(share, working_nodes)));
+      }
       lo = std::max(x + margin, a);
     }
   }
