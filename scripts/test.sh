@@ -8,7 +8,7 @@
 # 3. the benchmarks in a smoke mode (a few iterations; never timed assertions), without the
 #    cases that take seconds each (scripts/bench.sh runs them).
 # With --full, step 2 takes the sanitize-full preset instead: derive/ too, every test, and
-# the three fuzz targets. Run it after a change to derive/ (about 25 minutes).
+# the three fuzz targets. Run it after a change to derive/ or the contact solver.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 sanitize=sanitize fuzz_targets=(cli)
