@@ -26,26 +26,53 @@ constexpr double shortest_piece = 0.02;  // a shorter piece is dropped
 // on top of the 16 of a cap, so that the density of a zone that spans several asperities is
 // resolved before Newton's method meets it; and for a zone across a kink, eight for each
 // window radius of its extent in s, so that the window's edges are resolved (coarser, the
-// collocation has roots with the ends far from the contact's).
-void fit_nodes(Configuration& c, const SurfaceModel& surface) {
-  for (ZoneUnknowns& z : c.zones) {
+// collocation has roots with the ends far from the contact's). And for a zone whose end lies
+// a distance g from the next zone's (or from its own mirror image beyond the top or the
+// valley), 12 sqrt(width / g): the neighbour's density, which falls like a root at its end,
+// gives this zone's right-hand side a branch point g beyond its end, where Chebyshev series
+// converge like exp(-2 N sqrt(g / width)); coarser, Newton's method stalls as two zones
+// nearly touch. Whether any zone grew.
+bool fit_nodes(Configuration& c, const SurfaceModel& surface) {
+  bool grown = false;
+  for (std::size_t k = 0; k < c.zones.size(); ++k) {
+    ZoneUnknowns& z = c.zones[k];
     const double halves = (z.geometry.b - z.geometry.a) / surface.resolution;
     std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
     const double r = KinkCorrection::radius_for(surface, z.geometry);
     if (r > 0)
       needed = std::max(needed,
                         static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
-    if (z.d.size() < needed) z.d.resize(std::min<std::size_t>(most_working_nodes, needed), 0.0);
+    const double before = k == 0 ? 2 * z.geometry.a : z.geometry.a - c.zones[k - 1].geometry.b;
+    const double after = k + 1 == c.zones.size() ? 2 * (pi - z.geometry.b) : c.zones[k + 1].geometry.a - z.geometry.b;
+    const double nearest = std::min(z.geometry.a > 0 ? before : pi, z.geometry.b < pi ? after : pi);
+    if (nearest > 0) {
+      const double near_nodes = 12 * std::sqrt((z.geometry.b - z.geometry.a) / nearest);
+      if (near_nodes < most_working_nodes)
+        needed = std::max(needed, static_cast<std::size_t>(std::ceil(near_nodes)));
+      else
+        needed = most_working_nodes;
+    }
+    if (z.d.size() < std::min<std::size_t>(most_working_nodes, needed)) {
+      z.d.resize(std::min<std::size_t>(most_working_nodes, needed), 0.0);
+      grown = true;
+    }
   }
+  return grown;
 }
 
-// Twice the nodes (at most most_working_nodes) for a zone whose tail exceeds `limit`, or for
+// Twice the nodes (at most most_working_nodes) for a zone whose tail exceeds `limit` and its
+// rows' rounding (row_rounding: a small zone's coefficients converge no further), or for
 // every zone `where` holds; whether any grew.
-bool grow_nodes(Configuration& c, double limit, const std::function<bool(const ZoneUnknowns&)>& where = {}) {
+bool grow_nodes(Configuration& c, const SurfaceModel& surface, double limit,
+                const std::function<bool(const ZoneUnknowns&)>& where = {}) {
   bool grown = false;
-  for (ZoneUnknowns& z : c.zones) {
+  const std::vector<double> rounding = row_rounding(surface, c);
+  for (std::size_t k = 0; k < c.zones.size(); ++k) {
+    ZoneUnknowns& z = c.zones[k];
     const bool wanted = where ? where(z) : true;
-    if (wanted && coefficient_tail(z.d) > limit && z.d.size() < static_cast<std::size_t>(most_working_nodes)) {
+    const double floor = 10 * rounding[k] / std::max(own_potential(z), std::numeric_limits<double>::min());
+    if (wanted && coefficient_tail(z.d) > std::max(limit, floor) &&
+        z.d.size() < static_cast<std::size_t>(most_working_nodes)) {
       z.d.resize(std::min<std::size_t>(most_working_nodes, 2 * z.d.size()), 0.0);
       grown = true;
     }
@@ -161,8 +188,9 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
                                                                     : "a stretch closes");
     c = r.configuration;
     if (r.outcome == ZoneSystem::Outcome::failed) {
-      // A zone across a kink, too coarse for its density, may keep Newton from converging.
-      if (!grow_nodes(c, 1e-6, kinked)) {
+      // Zones that came too near for their nodes, or a zone across a kink too coarse for its
+      // density, may keep Newton from converging.
+      if (!fit_nodes(c, surface) && !grow_nodes(c, surface, 1e-6, kinked)) {
         char text[120];
         std::snprintf(text, sizeof text, "Newton's method did not converge on %zu zones (residual %.3g)",
                       c.zones.size(), r.residual);
@@ -172,7 +200,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       if (!close_stretch(c, r.stretch)) return {std::nullopt, "every zone vanished"};
     } else if (!system.windows_fit(c)) {
       continue;  // a kink window chosen again
-    } else if (!grow_nodes(c, working_tail)) {
+    } else if (!grow_nodes(c, surface, working_tail)) {
       const Verification v =
           verify(ContactSolution(model, c), gap_tolerance * surface.height_range, pressure_tolerance);
       if (tracing()) {

@@ -24,6 +24,7 @@ namespace {
 
 constexpr int most_changes = 400;               // changes of zones in one attempt
 constexpr int quick_changes = 4;                // from one zone at the top
+constexpr int most_resettles = 3;               // after a refined contact is refused
 constexpr double max_single_zone_harmonic = 8;  // the highest harmonic of a surface tried so
 
 }  // namespace
@@ -169,9 +170,22 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
       solved[index] = full_contact(P);
       continue;
     }
-    previous = settle_at(P, previous ? &*previous : nullptr);
-    solved[index] =
-        refine(surface_, *previous, P, tolerance_, fixed_nodes_, [&](double residual) { check_budget(residual); });
+    const Checkpoint checkpoint = [&](double residual) { check_budget(residual); };
+    Configuration settled = settle_at(P, previous ? &*previous : nullptr);
+    // A contact that its finer nodes refuse (a tension or a penetration that the working nodes
+    // did not show) settles again from the refined configuration.
+    for (int again = 0;; ++again) {
+      Refinement r = refine(surface_, settled, P, tolerance_, fixed_nodes_, checkpoint);
+      if (r.solved) {
+        solved[index] = std::move(*r.solved);
+        break;
+      }
+      if (again == most_resettles) throw BeyondReach(r.refusal);
+      SettleOutcome s = settle(surface_, P, std::move(r.refused), most_changes, checkpoint);
+      if (!s.contact) throw BeyondReach(r.refusal + "; settled again from it: " + s.failure);
+      settled = std::move(*s.contact);
+    }
+    previous = std::move(settled);
   }
   return solved;
 }

@@ -47,11 +47,7 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
 double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
                          const Configuration& c, double highest) {
   std::vector<double> magnitude;
-  for (const ZoneUnknowns& z : c.zones) {
-    double sum = 0;
-    for (double d : z.d) sum += std::fabs(d);
-    magnitude.push_back(z.geometry.h * sum);
-  }
+  for (const ZoneUnknowns& z : c.zones) magnitude.push_back(own_potential(z));
   std::vector<double> shift;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
     const ZoneGeometry& g = c.zones[k].geometry;
@@ -71,8 +67,8 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
 
 }  // namespace
 
-SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
-                     double tolerance, int fixed_nodes, const Checkpoint& checkpoint) {
+Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
+                  double tolerance, int fixed_nodes, const Checkpoint& checkpoint) {
   // The nodes of each zone double until its pressure and ends change by less than half
   // the tolerance (or, fixed, are compared with half as many again); the error estimate is the
   // last change, that of the coarser solution: an upper bound while the series converge.
@@ -168,9 +164,9 @@ SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const C
                   "wavecontact::solve_contact: the refined contact at P = %.6g is not admissible (lowest pressure "
                   "%.3g, lowest gap %.3g)",
                   P, v.lowest_pressure, v.lowest_gap);
-    throw BeyondReach(text);
+    return {std::nullopt, std::move(c), text};
   }
-  return {solution, P, std::max(error, rounding), rounding, nodes};
+  return {SolvedContact{solution, P, std::max(error, rounding), rounding, nodes}, {}, {}};
 }
 
 }  // namespace wavecontact::detail

@@ -5,6 +5,8 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "configuration.hpp"
 #include "solution.hpp"
@@ -20,10 +22,18 @@ struct SolvedContact {
   int nodes = 0;              // the most Chebyshev nodes of a zone
 };
 
+// A refined contact, or, where its finer nodes show a tension or a penetration the settled
+// contact's did not, the refined configuration to settle again and why it was refused.
+struct Refinement {
+  std::optional<SolvedContact> solved;
+  Configuration refused;
+  std::string refusal;
+};
+
 // tolerance: the relative error estimate the result must meet; fixed_nodes > 0 fixes the
 // nodes per zone (the estimate is then against half as many again). Throws BeyondReach if
-// Newton's method fails on more nodes or the refined contact is not admissible.
-SolvedContact refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
-                     double tolerance, int fixed_nodes, const Checkpoint& checkpoint);
+// Newton's method fails on more nodes.
+Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
+                  double tolerance, int fixed_nodes, const Checkpoint& checkpoint);
 
 }  // namespace wavecontact::detail

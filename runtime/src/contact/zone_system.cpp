@@ -36,22 +36,34 @@ double end_angle(double unknown, bool upper) {
 
 }  // namespace
 
+double own_potential(const ZoneUnknowns& z) {
+  double magnitude = 0;
+  for (double v : z.d) magnitude += std::fabs(v);
+  return z.geometry.h * magnitude;
+}
+
+std::vector<double> row_rounding(const SurfaceModel& surface, const Configuration& c) {
+  double others = 0;
+  for (const ZoneUnknowns& z : c.zones) others += own_potential(z) * (std::fabs(std::log(z.geometry.h)) + 2);
+  std::vector<double> rounding;
+  for (const ZoneUnknowns& z : c.zones) {
+    const double sum =
+        std::fabs(c.C) + surface.E / 2 * std::fabs(surface.depth((z.geometry.a + z.geometry.b) / 2)) + others;
+    rounding.push_back(8 * std::numeric_limits<double>::epsilon() * sum);
+  }
+  return rounding;
+}
+
 SystemLayout ZoneSystem::layout(const Configuration& c, bool ends_fixed) const {
   SystemLayout L;
   std::size_t at = 0;
   double largest_row = 0;
-  // A zone's T_0 row is a sum of |C| + (E/2)|y - y_top| + sum_l |Psi_l|, with |Psi_l| at most
-  // h_l sum |d_l| (|log h_l| + 2) (refinement.cpp's rounding_estimate takes each distance
-  // instead), and cannot fall below 8 eps of it. A zone whose own potential is smaller than
-  // that floor over rounding_reach (one of 1e-4 of the half period or less, beside large
-  // ones) has its rows scaled by the floor instead: their rounding is then rounding_reach.
-  double others = 0;
-  for (const ZoneUnknowns& z : c.zones) {
-    double magnitude = 0;
-    for (double v : z.d) magnitude += std::fabs(v);
-    others += z.geometry.h * magnitude * (std::fabs(std::log(z.geometry.h)) + 2);
-  }
-  for (const ZoneUnknowns& z : c.zones) {
+  // A zone whose own potential is smaller than its rows' rounding (row_rounding) over
+  // rounding_reach (one of 1e-4 of the half period or less, beside large ones) has its rows
+  // scaled by that instead: their rounding is then rounding_reach.
+  const std::vector<double> rounding = row_rounding(surface_, c);
+  for (std::size_t k = 0; k < c.zones.size(); ++k) {
+    const ZoneUnknowns& z = c.zones[k];
     SystemLayout::Zone lz;
     lz.at = at;
     lz.a_free = !ends_fixed && !z.geometry.top(), lz.b_free = !ends_fixed && !z.geometry.valley();
@@ -64,12 +76,7 @@ SystemLayout ZoneSystem::layout(const Configuration& c, bool ends_fixed) const {
     // 1 -+ s = 2 sin^2(x/2), 2 cos^2(x/2): d(1 -+ s)/dx = +-sin x.
     lz.a_rate = (lz.a_upper ? 1 : -1) * lz.end_scale / std::sin(z.geometry.a);
     lz.b_rate = (lz.b_upper ? 1 : -1) * lz.end_scale / std::sin(z.geometry.b);
-    double magnitude = 0;
-    for (double v : z.d) magnitude += std::fabs(v);
-    const double sum =
-        std::fabs(c.C) + surface_.E / 2 * std::fabs(surface_.depth((z.geometry.a + z.geometry.b) / 2)) + others;
-    const double floor = 8 * std::numeric_limits<double>::epsilon() * sum / rounding_reach;
-    lz.row_scale = std::max(z.geometry.h * std::max(magnitude, tiny), floor);
+    lz.row_scale = std::max({own_potential(z), z.geometry.h * tiny, rounding[k] / rounding_reach});
     largest_row = std::max(largest_row, lz.row_scale);
     at += static_cast<std::size_t>(lz.block());
     L.zones.push_back(lz);

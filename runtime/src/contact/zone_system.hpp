@@ -70,6 +70,15 @@ struct ZoneFields {
 std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vector<double>& x,
                                     const FieldTree::Batch& others, const KinkCorrection* kink);
 
+// A zone's own potential's magnitude, h sum |d_j| (its rows' natural unit).
+double own_potential(const ZoneUnknowns& z);
+
+// The rounding of each zone's T_0 row, as a potential: 8 eps of the sum it is formed from,
+// |C| + (E/2)|y - y_top| + sum_l |Psi_l|, with |Psi_l| at most own_potential (|log h_l| + 2).
+// Where it exceeds a small zone's own potential times 1e-9, the zone's coefficients are
+// rounding at that level: no more nodes make them converge further.
+std::vector<double> row_rounding(const SurfaceModel& surface, const Configuration& c);
+
 // The load of zone k over its part of [0, pi]: pi h d_0, plus its kink correction's.
 double zone_load(const Configuration& c, const ZoneFields& fields, std::size_t k);
 
