@@ -7,6 +7,7 @@
 #include "wavecontact/stability.hpp"
 #include "wavecontact/threads.hpp"
 #include "wavecontact/waviness.hpp"
+#include "wavecontact/waviness_zone.hpp"
 
 namespace wavecontact::python {
 
@@ -75,6 +76,29 @@ void bind_waviness(py::module_& m) {
       "Contact pressure p(x) [pressure] of one zone of half-width a, 0 < a < b1, at x (a float, "
       "or an array of any shape: the result has its shape). x is taken modulo 2 b1; 0 off the "
       "zone. Arrays use the vectorised kernel (AVX2) without the GIL.");
+  py::class_<WavinessZone>(m, "WavinessZone",
+                           "One zone of half-width a, prepared once: pressure(x) then costs only the point's "
+                           "own terms (what depends on params and a alone, beyond b1/2 the closed forms' atoms, "
+                           "is computed by the constructor). The values are pressure()'s, bit for bit.")
+      .def(py::init<const WavinessParams&, double, Form>(), "params"_a, "a"_a, "form"_a = Form::exact,
+           "The zone |x| <= a, 0 < a < b1; ValueError if a or params is invalid.")
+      .def(
+          "pressure",
+          [](const WavinessZone& zone, const py::handle& x) {
+            return scalar_or_array(
+                x, "wavecontact.WavinessZone.pressure", "x", [&](double xi) { return zone.pressure(xi); },
+                [&](const Eigen::Map<const Eigen::ArrayXd>& in, Eigen::Map<Eigen::ArrayXd>& out) {
+                  zone.pressure(in, out);
+                });
+          },
+          "x"_a, "p(x) [pressure] at x (a float, or an array of any shape: the result has its shape); 0 off the zone.")
+      .def_property_readonly("params", &WavinessZone::params, "the wave curve")
+      .def_property_readonly("a", &WavinessZone::half_width, "the half-width [length]")
+      .def_property_readonly("form", &WavinessZone::form, "the closed form evaluated")
+      .def("__repr__", [](const WavinessZone& z) {
+        return "WavinessZone(" + repr(z.params()) + ", a=" + std::string(py::repr(py::float_(z.half_width()))) +
+               ", form=" + (z.form() == Form::exact ? "Form.exact" : "Form.paper") + ")";
+      });
   m.def("load", &load, "params"_a, "a"_a, "form"_a = Form::exact,
         "Load per unit length P (eq. 6) carried by one zone of half-width a, 0 < a <= b1.");
   m.def("load_slope", &load_slope, "params"_a, "a"_a, "dP/da of the exact load, 0 < a <= b1.");

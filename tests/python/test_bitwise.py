@@ -37,6 +37,18 @@ def test_wave_curve(reference, m):
     same_bits(reference, f"{tag}.maximum_load", wc.LoadCurve(w).maximum_load)
 
 
+@pytest.mark.parametrize("m", [0, 2, 10])
+@pytest.mark.parametrize("a", [4.0, 6.0])
+def test_zone_gives_the_free_functions_values(m, a):
+    w = wc.WavinessParams(H1=1, b1=10, m=m, E=1)
+    zone = wc.WavinessZone(w, a)
+    assert zone.pressure(X).tobytes() == wc.pressure(w, a, X).tobytes()
+    for x in X[::8]:
+        assert zone.pressure(float(x)).hex() == wc.pressure(w, a, float(x)).hex(), x
+    paper = wc.WavinessZone(w, 4.0, wc.Form.paper)
+    assert paper.pressure(X).tobytes() == wc.pressure(w, 4.0, X, form=wc.Form.paper).tobytes()
+
+
 def test_two_scale(reference):
     params = wc.TwoScaleParams(wc.WavinessParams(H1=1, b1=10, m=0, E=1), wc.RoughnessParams(H2=0.001, n=64))
     c = wc.TwoScaleContact(params, 0.9)

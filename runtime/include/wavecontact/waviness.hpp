@@ -17,7 +17,8 @@ namespace wavecontact {
 
 // Contact pressure p(x) [pressure] for the contact half-width a, 0 < a < b1 (printed form:
 // beyond b1/2 only while 1 + m cos(pi a/b1) > 0). x is taken modulo the period 2 b1;
-// outside the contact zone the pressure is 0.
+// outside the contact zone the pressure is 0. For many calls on one zone, WavinessZone
+// (waviness_zone.hpp) keeps what depends on (params, a) alone.
 double pressure(const WavinessParams& params, double a, double x, Form form = Form::exact);
 
 // The same at every point of x. For a <= b1/2 on a CPU with AVX2 and FMA this is a

@@ -109,6 +109,10 @@ void BeyondHalfZone::pressures(double a, double b1, const double* x, double* p, 
   });
 }
 
+double BeyondHalfZone::pressure(const PointAngles& point) const {
+  return side(point).pressure(point, other_over_own(m_, point.Cx), point.Cx == 0);
+}
+
 double pressure_beyond_half(const WavinessParams& p, const ZoneAngles& zone, const PointAngles& point) {
   return side_of_zone(p, zone, point.Cx >= 0).pressure(point, other_over_own(p.m, point.Cx), point.Cx == 0);
 }

@@ -25,6 +25,8 @@ class BeyondHalfZone {
   // Cauchy part tabulated over the points that take it (BranchSide::tabulate_cauchy), in chunks
   // on threads from min_points on (parallel.hpp).
   void pressures(double a, double b1, const double* x, double* p, std::size_t count, std::size_t min_points);
+  // p at one point of the zone, 0 <= x^ < a^ (pressure_beyond_half's value).
+  double pressure(const PointAngles& point) const;
 
  private:
   const BranchSide& side(const PointAngles& point) const { return point.Cx >= 0 ? top_ : flank_; }

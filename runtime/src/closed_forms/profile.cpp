@@ -160,9 +160,10 @@ bool Profile::beyond_branch(double Ca) const { return evaluator_.branch.beta > 0
 
 void Profile::check_half_width(const char* function, double a, bool closed) const {
   const bool full = closed && reach_ == params_.b1;
-  detail::require_half_width(function, a, params_.b1, reach_, full,
-                             reach_ == params_.b1 ? "b1 = " + detail::format(reach_)
-                                                  : detail::format(reach_) + ", where the profile has a pole");
+  detail::require_half_width(function, a, params_.b1, reach_, full, [&] {
+    return reach_ == params_.b1 ? "b1 = " + detail::format(reach_)
+                                : detail::format(reach_) + ", where the profile has a pole";
+  });
 }
 
 double Profile::pressure(double a, double x) const {

@@ -92,7 +92,8 @@ double unique_half_width(const char* function, const LoadCurve& curve, double P)
 Admissibility admissibility(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::admissibility";
   validate(params, function);
-  detail::require_half_width(function, a, params.b1, params.b1, false, "b1 = " + detail::format(params.b1));
+  detail::require_half_width(function, a, params.b1, params.b1, false,
+                             [&] { return "b1 = " + detail::format(params.b1); });
   std::vector<double> xs = zone_points(a);
   const double kink = params.b1 / 2;
   if (a > kink) {

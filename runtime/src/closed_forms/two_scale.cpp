@@ -125,10 +125,10 @@ TwoScaleContact::TwoScaleContact(const TwoScaleParams& params, double a, Form fo
   validate(params.roughness, function);
   // The roughness solution holds for any zone; the printed eq. 19/20 only up to b1/2.
   if (form == Form::exact) {
-    detail::require_half_width(function, a, w.b1, w.b1, false, "b1 = " + detail::format(w.b1));
+    detail::require_half_width(function, a, w.b1, w.b1, false, [&] { return "b1 = " + detail::format(w.b1); });
   } else {
     detail::require_half_width(function, a, w.b1, w.b1 / 2, true,
-                               "b1/2 = " + detail::format(w.b1 / 2) + " (printed eq. 19/20)");
+                               [&] { return "b1/2 = " + detail::format(w.b1 / 2) + " (printed eq. 19/20)"; });
   }
   zone_ = zone_angles(a, w.b1);
   waviness_load_ = wavecontact::load(w, a);  // the printed eq. 13 has the same load (derive/)

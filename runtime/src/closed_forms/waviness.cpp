@@ -11,132 +11,19 @@
 #include <boost/math/special_functions/sin_pi.hpp>
 #include <boost/math/tools/roots.hpp>
 
-#include "support/parallel.hpp"
 #include "closed_forms/periodic_regime.hpp"
 #include "support/validate.hpp"
 #include "wavecontact/angles.hpp"
-#include "wavecontact/isa.hpp"
-#include "wavecontact/threads.hpp"
 #include "wavecontact/generated/waviness_evaluators.hpp"
-#include "kernels/pressure_simd.hpp"
 
 namespace wavecontact {
 
-namespace {
-
 using boost::math::double_constants::pi;
-
-// One zone per period: 0 < a < b1 (a = b1 allowed where `full_contact_allowed`, the limit
-// of full contact). The printed formulas beyond b1/2 are the analytic branch of eq. 2,
-// defined while 1 + m cos(pi a/b1) > 0.
-void require_half_width(const char* function, const WavinessParams& p, double a, Form form,
-                        bool full_contact_allowed = false) {
-  detail::require_half_width(function, a, p.b1, p.b1, full_contact_allowed,
-                             "b1 = " + detail::format(p.b1) + " (one contact zone per period)");
-  if (form == Form::paper && a > p.b1 / 2 && !(1 + p.m * zone_angles(a, p.b1).Ca > 0)) {
-    detail::domain_error(function, "a", a,
-                         "for the printed eq. 13/14, 1 + m cos(pi a/b1) > 0: beyond a = b1/2 they "
-                         "continue the top branch of eq. 2, which has a pole at cos(pi x/b1) = -1/m");
-  }
-}
-
-double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x, Form form) {
-  const double r = std::fabs(reduce_to_period(x, p.b1));
-  if (r >= a) return 0;
-  const PointAngles point = point_angles(r, a, p.b1);
-  if (form == Form::exact && a > p.b1 / 2) return detail::pressure_beyond_half(p, zone, point);
-  return form == Form::exact
-             ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D)
-             : generated::waviness_pressure_paper(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
-}
-
-// Beyond b1/2 the exact form is the closed forms with J_{j,l} atoms, with the zone's atoms kept
-// (detail::BeyondHalfZone; no SIMD kernel); the printed one continues its closed form.
-bool beyond_half_exact(const WavinessParams& p, double a, Form form) { return form == Form::exact && a > p.b1 / 2; }
-
-}  // namespace
-
-double pressure(const WavinessParams& params, double a, double x, Form form) {
-  constexpr const char* function = "wavecontact::pressure";
-  validate(params, function);
-  require_half_width(function, params, a, form);
-  detail::require_finite(function, "x", x);
-  return pressure_at(params, a, zone_angles(a, params.b1), x, form);
-}
-
-void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
-              Eigen::Ref<Eigen::ArrayXd> p, Form form) {
-  constexpr const char* function = "wavecontact::pressure";
-  validate(params, function);
-  require_half_width(function, params, a, form);
-  detail::require_same_size(function, x, p.size());
-  const ZoneAngles zone = zone_angles(a, params.b1);
-  const auto count = static_cast<std::size_t>(x.size());
-  const double* xs = x.data();
-  double* ps = p.data();
-  if (beyond_half_exact(params, a, form)) {
-    detail::require_finite_points(function, x);
-    detail::BeyondHalfZone(params, zone).pressures(a, params.b1, xs, ps, count, parallel_points_costly);
-    return;
-  }
-  const bool simd = detail::simd_pressure_available();
-  const detail::WavinessZone simd_zone{params.E, params.H1, params.b1, params.m, a, zone.Ca, zone.Sa};
-  // The points are checked in the threads, before any is computed.
-  const bool finite = detail::for_each_chunk(
-      count, detail::simd_block, parallel_points,
-      [xs](std::size_t begin, std::size_t end) { return detail::all_finite(xs + begin, end - begin); },
-      [&](std::size_t begin, std::size_t end) {
-        if (simd) {
-          detail::simd_pressure(simd_zone, form, xs + begin, ps + begin, end - begin);
-        } else {
-          for (std::size_t i = begin; i < end; ++i) ps[i] = pressure_at(params, a, zone, xs[i], form);
-        }
-      });
-  if (!finite) detail::require_finite_points(function, x);
-}
-
-Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
-  Eigen::ArrayXd p(x.size());
-  pressure(params, a, x, p, form);
-  return p;
-}
-
-namespace detail {
-
-bool simd_pressure_available() { return array_kernel_isa() != Isa::scalar; }
-
-void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p, std::size_t count) {
-  if (array_kernel_isa() == Isa::avx512) return avx512::simd_pressure(zone, form, x, p, count);
-  avx2::simd_pressure(zone, form, x, p, count);
-}
-
-void simd_point_angles(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
-                       unsigned char* inside) {
-  if (array_kernel_isa() == Isa::avx512) return avx512::simd_point_angles(b1, a, x, count, angles, inside);
-  avx2::simd_point_angles(b1, a, x, count, angles, inside);
-}
-
-void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count) {
-  if (array_kernel_isa() == Isa::avx512) return avx512::simd_add_roughness_pressure(zone, x, p, count);
-  avx2::simd_add_roughness_pressure(zone, x, p, count);
-}
-
-bool simd_all_finite(const double* x, std::size_t count) {
-  if (array_kernel_isa() == Isa::avx512) return avx512::simd_all_finite(x, count);
-  return avx2::simd_all_finite(x, count);
-}
-
-bool all_finite(const double* x, std::size_t count) {
-  if (simd_pressure_available()) return simd_all_finite(x, count);
-  return std::all_of(x, x + count, [](double v) { return std::isfinite(v); });
-}
-
-}  // namespace detail
 
 double pa_over_pstar(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::pa_over_pstar";
   validate(params, function);
-  require_half_width(function, params, a, form, true);
+  detail::require_waviness_half_width(function, params, a, form, true);
   const ZoneAngles zone = zone_angles(a, params.b1);
   if (form == Form::exact && a > params.b1 / 2) return detail::load_beyond_half(1.0, 1.0, params.m, zone) / pi;
   return generated::waviness_pa_over_pstar(params.m, zone.Ca, zone.Sa);
@@ -145,7 +32,7 @@ double pa_over_pstar(const WavinessParams& params, double a, Form form) {
 double load(const WavinessParams& params, double a, Form form) {
   constexpr const char* function = "wavecontact::load";
   validate(params, function);
-  require_half_width(function, params, a, form, true);
+  detail::require_waviness_half_width(function, params, a, form, true);
   const ZoneAngles zone = zone_angles(a, params.b1);
   // Beyond b1/2 the exact pressure reaches the |cos| branch (the printed form continues its
   // own closed form, whose load is waviness_load).
@@ -186,7 +73,7 @@ double load_slope_factor(const WavinessParams& params, double a) {
 double load_slope(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::load_slope";
   validate(params, function);
-  require_half_width(function, params, a, Form::exact, true);
+  detail::require_waviness_half_width(function, params, a, Form::exact, true);
   // sin(pi a/b1) = sin(pi (b1 - a)/b1), b1 - a exact beyond b1/2: no digits lost as a -> b1.
   const double sine = boost::math::sin_pi((a > params.b1 / 2 ? params.b1 - a : a) / params.b1);
   return pi / params.b1 * sine * detail::load_slope_factor(params, a);
@@ -202,7 +89,7 @@ double mean_pressure(const WavinessParams& params, double a) { return load(param
 double contact_fraction(const WavinessParams& params, double a) {
   constexpr const char* function = "wavecontact::contact_fraction";
   validate(params, function);
-  require_half_width(function, params, a, Form::exact, true);
+  detail::require_waviness_half_width(function, params, a, Form::exact, true);
   return a / params.b1;
 }
 

@@ -138,7 +138,8 @@ double full_contact_load(const Surface& surface) {
 
 SingleZoneCheck single_zone_check(const Surface& surface, double a) {
   constexpr const char* function = "wavecontact::single_zone_check";
-  detail::require_half_width(function, a, surface.b1(), surface.b1(), false, "b1 = " + detail::format(surface.b1()));
+  detail::require_half_width(function, a, surface.b1(), surface.b1(), false,
+                             [&] { return "b1 = " + detail::format(surface.b1()); });
   const detail::SingleZoneResult r = detail::check_single_zone(surface.model(), pi * a / surface.b1());
   const double to_x = surface.b1() / pi;
   return {r.solution,

@@ -15,7 +15,7 @@
 
 namespace wavecontact::detail {
 
-struct WavinessZone {
+struct SimdWavinessZone {
   double E, H1, b1, m, a, Ca, Sa;
 };
 
@@ -36,7 +36,7 @@ inline constexpr std::size_t simd_block = 256;
 
 // p[i] for the points x[i], i < count (finite, any period); 0 outside the zone. On the
 // widest ISA of array_kernel_isa(); call only if simd_pressure_available().
-void simd_pressure(const WavinessZone& zone, Form form, const double* x, double* p, std::size_t count);
+void simd_pressure(const SimdWavinessZone& zone, Form form, const double* x, double* p, std::size_t count);
 
 // p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period); as above.
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count);

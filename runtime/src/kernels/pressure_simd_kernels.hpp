@@ -142,7 +142,8 @@ void pressure_blocks(double b1, double a, double Ca, double Sa, const double* x,
 }
 
 template <typename Evaluator>
-void waviness_blocks(const WavinessZone& z, const double* x, double* p, std::size_t count, const Evaluator& evaluate) {
+void waviness_blocks(const SimdWavinessZone& z, const double* x, double* p, std::size_t count,
+                     const Evaluator& evaluate) {
   pressure_blocks<true>(
       z.b1, z.a, z.Ca, z.Sa, x, count,
       [&](const Atoms& atoms, double* value) {
@@ -234,7 +235,7 @@ bool all_finite_kernel(const double* x, std::size_t count) {
   return non_finite == 0;
 }
 
-void pressure_kernel(const WavinessZone& z, Form form, const double* x, double* p, std::size_t count) {
+void pressure_kernel(const SimdWavinessZone& z, Form form, const double* x, double* p, std::size_t count) {
   const double E = z.E, H1 = z.H1, b1 = z.b1, m = z.m, Ca = z.Ca, Sa = z.Sa;  // not aliased by p
   if (form == Form::exact) {
     waviness_blocks(z, x, p, count, [=](double Cx, double Sx, double D) {

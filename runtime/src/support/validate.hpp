@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "wavecontact/angles.hpp"
 #include "wavecontact/parameters.hpp"
 
 namespace wavecontact::detail {
@@ -48,14 +49,30 @@ inline void require_scale(const char* function, const char* parameter, double va
 }
 
 // A zone's half-width: min_half_width_ratio b1 <= a < upper (<= upper where `closed`);
-// `upper_text` says what the upper bound is.
-inline void require_half_width(const char* function, double a, double b1, double upper, bool closed,
-                               const std::string& upper_text) {
+// `upper_text()` says what the upper bound is (called only to refuse: a scalar evaluation
+// does not pay for the text).
+template <class UpperText>
+void require_half_width(const char* function, double a, double b1, double upper, bool closed,
+                        const UpperText& upper_text) {
   const double lowest = min_half_width_ratio * b1;
   if (!(std::isfinite(a) && a >= lowest && (a < upper || (closed && a == upper)))) {
     domain_error(
         function, "a", a,
-        format(lowest) + " = " + format(min_half_width_ratio) + " b1 <= a " + (closed ? "<= " : "< ") + upper_text);
+        format(lowest) + " = " + format(min_half_width_ratio) + " b1 <= a " + (closed ? "<= " : "< ") + upper_text());
+  }
+}
+
+// One zone of the wave curve per period: 0 < a < b1 (a = b1 allowed where
+// `full_contact_allowed`, the limit of full contact). The printed formulas beyond b1/2 are the
+// analytic branch of eq. 2, defined while 1 + m cos(pi a/b1) > 0.
+inline void require_waviness_half_width(const char* function, const WavinessParams& p, double a, Form form,
+                                        bool full_contact_allowed = false) {
+  require_half_width(function, a, p.b1, p.b1, full_contact_allowed,
+                     [&] { return "b1 = " + format(p.b1) + " (one contact zone per period)"; });
+  if (form == Form::paper && a > p.b1 / 2 && !(1 + p.m * zone_angles(a, p.b1).Ca > 0)) {
+    domain_error(function, "a", a,
+                 "for the printed eq. 13/14, 1 + m cos(pi a/b1) > 0: beyond a = b1/2 they "
+                 "continue the top branch of eq. 2, which has a pole at cos(pi x/b1) = -1/m");
   }
 }
 

@@ -1,0 +1,50 @@
+// One contact zone |x| <= a of the wave curve (seed eq. 2), prepared once for many
+// evaluations: what depends on (params, a) alone (the zone's angles, and beyond b1/2 the atoms
+// of the closed forms on both sides of the kink) is computed by the constructor, so that a
+// point costs only its own angles and terms. Its values are those of the free functions of
+// waviness.hpp, bit for bit (they build the same evaluations per call).
+#pragma once
+
+#include <memory>
+
+#include <Eigen/Core>
+
+#include "wavecontact/angles.hpp"
+#include "wavecontact/parameters.hpp"
+
+namespace wavecontact {
+
+namespace detail {
+class BeyondHalfZone;
+}
+
+class WavinessZone {
+ public:
+  // 0 < a < b1 (std::domain_error otherwise, as wavecontact::pressure).
+  WavinessZone(const WavinessParams& params, double a, Form form = Form::exact);
+
+  // p(x) [pressure]; x is taken modulo the period 2 b1, 0 off the zone.
+  double pressure(double x) const;
+  // The same at every point of x (the array kernels of waviness.hpp's pressure()).
+  Eigen::ArrayXd pressure(const Eigen::Ref<const Eigen::ArrayXd>& x) const;
+  // The same into p (p.size() == x.size()), without allocating.
+  void pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
+
+  const WavinessParams& params() const { return params_; }
+  double half_width() const { return a_; }
+  Form form() const { return form_; }
+
+ private:
+  friend void pressure(const WavinessParams&, double, const Eigen::Ref<const Eigen::ArrayXd>&,
+                       Eigen::Ref<Eigen::ArrayXd>, Form);
+  // The array evaluation, its refusals naming `function`.
+  void fill(const char* function, const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
+
+  WavinessParams params_;
+  double a_;
+  Form form_;
+  ZoneAngles angles_;
+  std::shared_ptr<const detail::BeyondHalfZone> beyond_half_;  // the exact form beyond b1/2; else null
+};
+
+}  // namespace wavecontact

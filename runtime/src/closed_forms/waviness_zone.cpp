@@ -1,0 +1,113 @@
+// The pressure of one zone of the wave curve (waviness_zone.hpp), and waviness.hpp's free
+// pressure functions, which evaluate through it.
+#include "wavecontact/waviness_zone.hpp"
+
+#include <cmath>
+
+#include "closed_forms/periodic_regime.hpp"
+#include "kernels/pressure_simd.hpp"
+#include "support/parallel.hpp"
+#include "support/validate.hpp"
+#include "wavecontact/generated/waviness_evaluators.hpp"
+#include "wavecontact/threads.hpp"
+#include "wavecontact/waviness.hpp"
+
+namespace wavecontact {
+
+namespace {
+
+// p at x: the generated closed form (exact up to b1/2, or the printed eq. 13/14), and beyond
+// b1/2 the exact one, beyond_half(point) (detail::BeyondHalfZone's atoms).
+template <class BeyondHalf>
+double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x, Form form,
+                   const BeyondHalf& beyond_half) {
+  const double r = std::fabs(reduce_to_period(x, p.b1));
+  if (r >= a) return 0;
+  const PointAngles point = point_angles(r, a, p.b1);
+  if (form == Form::exact && a > p.b1 / 2) return beyond_half(point);
+  return form == Form::exact
+             ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D)
+             : generated::waviness_pressure_paper(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
+}
+
+}  // namespace
+
+WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form) : params_(params), a_(a), form_(form) {
+  constexpr const char* function = "wavecontact::WavinessZone";
+  validate(params, function);
+  detail::require_waviness_half_width(function, params, a, form);
+  angles_ = zone_angles(a, params.b1);
+  if (form == Form::exact && a > params.b1 / 2)
+    beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, angles_);
+}
+
+double WavinessZone::pressure(double x) const {
+  detail::require_finite("wavecontact::WavinessZone::pressure", "x", x);
+  return pressure_at(params_, a_, angles_, x, form_,
+                     [this](const PointAngles& point) { return beyond_half_->pressure(point); });
+}
+
+void WavinessZone::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const {
+  fill("wavecontact::WavinessZone::pressure", x, p);
+}
+
+Eigen::ArrayXd WavinessZone::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x) const {
+  Eigen::ArrayXd p(x.size());
+  fill("wavecontact::WavinessZone::pressure", x, p);
+  return p;
+}
+
+void WavinessZone::fill(const char* function, const Eigen::Ref<const Eigen::ArrayXd>& x,
+                        Eigen::Ref<Eigen::ArrayXd> p) const {
+  detail::require_same_size(function, x, p.size());
+  const auto count = static_cast<std::size_t>(x.size());
+  const double* xs = x.data();
+  double* ps = p.data();
+  if (beyond_half_) {
+    detail::require_finite_points(function, x);
+    detail::BeyondHalfZone tables = *beyond_half_;  // the Cauchy atoms' tables are the call's
+    tables.pressures(a_, params_.b1, xs, ps, count, parallel_points_costly);
+    return;
+  }
+  const bool simd = detail::simd_pressure_available();
+  const detail::SimdWavinessZone simd_zone{params_.E, params_.H1, params_.b1, params_.m, a_, angles_.Ca, angles_.Sa};
+  // The points are checked in the threads, before any is computed.
+  const bool finite = detail::for_each_chunk(
+      count, detail::simd_block, parallel_points,
+      [xs](std::size_t begin, std::size_t end) { return detail::all_finite(xs + begin, end - begin); },
+      [&](std::size_t begin, std::size_t end) {
+        if (simd) {
+          detail::simd_pressure(simd_zone, form_, xs + begin, ps + begin, end - begin);
+        } else {
+          for (std::size_t i = begin; i < end; ++i) ps[i] = pressure(xs[i]);
+        }
+      });
+  if (!finite) detail::require_finite_points(function, x);
+}
+
+double pressure(const WavinessParams& params, double a, double x, Form form) {
+  constexpr const char* function = "wavecontact::pressure";
+  validate(params, function);
+  detail::require_waviness_half_width(function, params, a, form);
+  detail::require_finite(function, "x", x);
+  // One point beyond b1/2 needs the atoms of its own side of the kink only.
+  const ZoneAngles zone = zone_angles(a, params.b1);
+  return pressure_at(params, a, zone, x, form,
+                     [&](const PointAngles& point) { return detail::pressure_beyond_half(params, zone, point); });
+}
+
+void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
+              Eigen::Ref<Eigen::ArrayXd> p, Form form) {
+  constexpr const char* function = "wavecontact::pressure";
+  validate(params, function);
+  detail::require_waviness_half_width(function, params, a, form);
+  WavinessZone(params, a, form).fill(function, x, p);
+}
+
+Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
+  Eigen::ArrayXd p(x.size());
+  pressure(params, a, x, p, form);
+  return p;
+}
+
+}  // namespace wavecontact

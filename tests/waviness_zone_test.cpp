@@ -1,0 +1,109 @@
+// WavinessZone (wavecontact/waviness_zone.hpp) against the free functions of waviness.hpp:
+// the same values, bit for bit, on every array-kernel path; the same refusals; and one zone
+// shared by threads.
+#define BOOST_TEST_MODULE waviness_zone
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include "isa_under_test.hpp"
+#include "wavecontact/waviness.hpp"
+#include "wavecontact/waviness_zone.hpp"
+
+using namespace wavecontact;
+
+namespace {
+
+bool same_bits(double u, double v) { return std::memcmp(&u, &v, sizeof u) == 0; }
+
+// Points over three periods: inside the zone, at its edge, outside it, negative.
+Eigen::ArrayXd points_around(const WavinessParams& p, double a, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> unit(-3.0, 3.0);
+  Eigen::ArrayXd x(203);
+  for (Eigen::Index i = 0; i < 200; ++i) x[i] = p.b1 * unit(random);
+  x[200] = a, x[201] = -a * (1 - 1e-12), x[202] = 2 * p.b1 + a / 2;
+  return x;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(zone_gives_the_free_functions_values_bit_for_bit) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int compared = 0;
+  for (double m : {0.0, 0.2, 1.0, 10.0, 1e4}) {
+    const WavinessParams p{0.7, 3.0, m, 2e5};
+    // Half-widths within b1/2 (the generated closed forms, both forms) and beyond (the exact
+    // form across the kink).
+    for (double ratio : {1e-6, 0.1, 0.37, 0.5, 0.5 + 1e-9, 0.71, 0.98}) {
+      const double a = ratio * p.b1;
+      for (Form form : {Form::exact, Form::paper}) {
+        if (form == Form::paper && ratio > 0.5) continue;  // the printed form's own domain
+        const WavinessZone zone(p, a, form);
+        const Eigen::ArrayXd x = points_around(p, a, random);
+        const Eigen::ArrayXd free_array = pressure(p, a, x, form), zone_array = zone.pressure(x);
+        Eigen::ArrayXd into(x.size());
+        zone.pressure(x, into);
+        for (Eigen::Index i = 0; i < x.size(); ++i) {
+          const double free_scalar = pressure(p, a, x[i], form), zone_scalar = zone.pressure(x[i]);
+          BOOST_TEST(same_bits(zone_scalar, free_scalar), "m = " << m << ", a/b1 = " << ratio << ", x = " << x[i]
+                                                                 << ": zone " << zone_scalar << ", free "
+                                                                 << free_scalar);
+          BOOST_TEST(same_bits(zone_array[i], free_array[i]),
+                     "array, m = " << m << ", a/b1 = " << ratio << ", x = " << x[i] << ": zone " << zone_array[i]
+                                   << ", free " << free_array[i]);
+          BOOST_TEST(same_bits(into[i], zone_array[i]));
+          ++compared;
+        }
+      }
+    }
+  }
+  BOOST_TEST(compared == 5 * (4 * 2 + 3) * 203);
+}
+
+BOOST_AUTO_TEST_CASE(zone_refuses_what_the_free_functions_refuse) {
+  const WavinessParams p{1, 10, 0.2, 1};
+  const auto refuses = [](const auto& call, const std::string& expected) {
+    try {
+      call();
+    } catch (const std::domain_error& e) {
+      BOOST_TEST(std::string(e.what()).find(expected) != std::string::npos,
+                 "message: " << e.what() << "; expected to contain: " << expected);
+      return;
+    }
+    BOOST_ERROR("no std::domain_error; expected one containing: " << expected);
+  };
+  refuses([&] { WavinessZone(p, 10, Form::exact); }, "wavecontact::WavinessZone: a = 10 is invalid");
+  refuses([&] { WavinessZone(p, std::nan(""), Form::exact); }, "wavecontact::WavinessZone: a = nan is invalid");
+  refuses([&] { WavinessZone(WavinessParams{1, 10, -1, 1}, 4, Form::exact); }, "m = -1 is invalid");
+  refuses([&] { WavinessZone(WavinessParams{1, 10, 10, 1}, 9.5, Form::paper); }, "for the printed eq. 13/14");
+  const WavinessZone zone(p, 4);
+  refuses([&] { zone.pressure(INFINITY); }, "wavecontact::WavinessZone::pressure: x = inf is invalid");
+  Eigen::ArrayXd x = Eigen::ArrayXd::LinSpaced(9, -4, 4);
+  x[5] = std::nan("");
+  refuses([&] { zone.pressure(x); }, "wavecontact::WavinessZone::pressure: x = nan is invalid");
+  Eigen::ArrayXd short_p(3);
+  refuses([&] { zone.pressure(Eigen::ArrayXd::LinSpaced(9, -4, 4), short_p); }, "p.size() = 3 is invalid");
+  // The free function keeps its own name in its refusals.
+  refuses([&] { pressure(p, 4, x); }, "wavecontact::pressure: x = nan is invalid");
+}
+
+BOOST_AUTO_TEST_CASE(one_zone_serves_threads_at_once) {
+  // Beyond b1/2 an array evaluation tabulates atoms per call: two threads on one zone must get
+  // what one thread gets.
+  const WavinessParams p{1, 10, 10, 1};
+  const WavinessZone zone(p, 8.3);
+  const Eigen::ArrayXd x = Eigen::ArrayXd::LinSpaced(4001, -10, 10);
+  const Eigen::ArrayXd alone = zone.pressure(x);
+  Eigen::ArrayXd first, second;
+  std::thread one([&] { first = zone.pressure(x); }), two([&] { second = zone.pressure(x); });
+  one.join(), two.join();
+  BOOST_TEST((first == alone).all());
+  BOOST_TEST((second == alone).all());
+  BOOST_TEST((alone != 0).count() > 3000);  // the zone covers 83 % of the period
+}
