@@ -23,7 +23,7 @@ foreach(line IN LISTS lines)
     # Data, no instruction of the unit's ISA: DW.ref.__gxx_personality_v0, the same pointer in
     # every unit (AddressSanitizer's stack cleanups ask for it), and the typeinfo of function
     # types that clang's UndefinedBehaviorSanitizer checks indirect calls against.
-    if(NOT symbol MATCHES "^wavecontact::detail::avx(2|512)::(simd_pressure|simd_add_roughness_pressure|simd_point_angles|simd_all_finite)\\(" AND
+    if(NOT symbol MATCHES "^wavecontact::detail::avx(2|512)::(simd_pressure|simd_point_pressure|simd_add_roughness_pressure|simd_point_angles|simd_all_finite)\\(" AND
        NOT symbol STREQUAL "DW.ref.__gxx_personality_v0" AND NOT symbol MATCHES "^typeinfo (name )?for ")
       message(FATAL_ERROR "a SIMD unit exports ${symbol}:\n  ${line}")
     endif()

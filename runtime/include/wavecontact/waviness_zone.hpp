@@ -44,6 +44,8 @@ class WavinessZone {
   double a_;
   Form form_;
   ZoneAngles angles_;
+  double sin_a_;       // sin(pi a/b1), for the array kernels' arithmetic
+  bool point_kernel_;  // a <= b1/2 on a CPU with the array kernels: one point by their arithmetic
   std::shared_ptr<const detail::BeyondHalfZone> beyond_half_;  // the exact form beyond b1/2; else null
 };
 

@@ -30,6 +30,24 @@ double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, do
              : generated::waviness_pressure_paper(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
 }
 
+// Below this many points an array is evaluated point by point (kernel_point).
+constexpr std::size_t few_points = detail::simd_block / 8;
+
+// The zone for the array kernels (a <= b1/2).
+detail::SimdWavinessZone simd_zone(const WavinessParams& p, double a, const ZoneAngles& zone, double sin_a) {
+  return {p.E, p.H1, p.b1, p.m, a, zone.Ca, zone.Sa, sin_a};
+}
+
+double sine_of(const ZoneAngles& zone) { return std::sqrt(zone.Sa * (1 + zone.Ca)); }
+
+// Where the CPU runs the array kernels and a <= b1/2, one point takes their arithmetic (the
+// same atoms and closed form, compiled for the vector unit's ISA, with its fused
+// multiply-adds), x reduced to the period exactly first.
+bool point_kernel(const WavinessParams& p, double a) { return a <= p.b1 / 2 && detail::simd_pressure_available(); }
+double kernel_point(const detail::SimdWavinessZone& zone, Form form, double x) {
+  return detail::simd_point_pressure(zone, form, std::fabs(x) <= zone.b1 ? x : reduce_to_period(x, zone.b1));
+}
+
 }  // namespace
 
 WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form) : params_(params), a_(a), form_(form) {
@@ -37,12 +55,15 @@ WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form) : 
   validate(params, function);
   detail::require_waviness_half_width(function, params, a, form);
   angles_ = zone_angles(a, params.b1);
+  sin_a_ = sine_of(angles_);
+  point_kernel_ = point_kernel(params, a);
   if (form == Form::exact && a > params.b1 / 2)
     beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, angles_);
 }
 
 double WavinessZone::pressure(double x) const {
   detail::require_finite("wavecontact::WavinessZone::pressure", "x", x);
+  if (point_kernel_) return kernel_point(simd_zone(params_, a_, angles_, sin_a_), form_, x);
   return pressure_at(params_, a_, angles_, x, form_,
                      [this](const PointAngles& point) { return beyond_half_->pressure(point); });
 }
@@ -70,14 +91,20 @@ void WavinessZone::fill(const char* function, const Eigen::Ref<const Eigen::Arra
     return;
   }
   const bool simd = detail::simd_pressure_available();
-  const detail::SimdWavinessZone simd_zone{params_.E, params_.H1, params_.b1, params_.m, a_, angles_.Ca, angles_.Sa};
+  const detail::SimdWavinessZone zone = simd_zone(params_, a_, angles_, sin_a_);
+  // A few points: one at a time (a block of the array kernels costs 256 points' work).
+  if (point_kernel_ && count < few_points) {
+    for (std::size_t i = 0; i < count; ++i) detail::require_finite(function, "x", xs[i]);
+    for (std::size_t i = 0; i < count; ++i) ps[i] = kernel_point(zone, form_, xs[i]);
+    return;
+  }
   // The points are checked in the threads, before any is computed.
   const bool finite = detail::for_each_chunk(
       count, detail::simd_block, parallel_points,
       [xs](std::size_t begin, std::size_t end) { return detail::all_finite(xs + begin, end - begin); },
       [&](std::size_t begin, std::size_t end) {
         if (simd) {
-          detail::simd_pressure(simd_zone, form_, xs + begin, ps + begin, end - begin);
+          detail::simd_pressure(zone, form_, xs + begin, ps + begin, end - begin);
         } else {
           for (std::size_t i = begin; i < end; ++i) ps[i] = pressure(xs[i]);
         }
@@ -90,8 +117,9 @@ double pressure(const WavinessParams& params, double a, double x, Form form) {
   validate(params, function);
   detail::require_waviness_half_width(function, params, a, form);
   detail::require_finite(function, "x", x);
-  // One point beyond b1/2 needs the atoms of its own side of the kink only.
   const ZoneAngles zone = zone_angles(a, params.b1);
+  if (point_kernel(params, a)) return kernel_point(simd_zone(params, a, zone, sine_of(zone)), form, x);
+  // One point beyond b1/2 needs the atoms of its own side of the kink only.
   return pressure_at(params, a, zone, x, form,
                      [&](const PointAngles& point) { return detail::pressure_beyond_half(params, zone, point); });
 }

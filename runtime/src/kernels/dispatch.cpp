@@ -16,6 +16,11 @@ void simd_pressure(const SimdWavinessZone& zone, Form form, const double* x, dou
   avx2::simd_pressure(zone, form, x, p, count);
 }
 
+double simd_point_pressure(const SimdWavinessZone& zone, Form form, double x) {
+  if (array_kernel_isa() == Isa::avx512) return avx512::simd_point_pressure(zone, form, x);
+  return avx2::simd_point_pressure(zone, form, x);
+}
+
 void simd_point_angles(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
                        unsigned char* inside) {
   if (array_kernel_isa() == Isa::avx512) return avx512::simd_point_angles(b1, a, x, count, angles, inside);

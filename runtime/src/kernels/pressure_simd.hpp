@@ -15,8 +15,9 @@
 
 namespace wavecontact::detail {
 
+// One zone of the wave curve, a <= b1/2; sin_a = sin(pi a/b1) = sqrt(Sa (1 + Ca)).
 struct SimdWavinessZone {
-  double E, H1, b1, m, a, Ca, Sa;
+  double E, H1, b1, m, a, Ca, Sa, sin_a;
 };
 
 // One zone of the roughness harmonic, n = count of legendre:
@@ -37,6 +38,9 @@ inline constexpr std::size_t simd_block = 256;
 // p[i] for the points x[i], i < count (finite, any period); 0 outside the zone. On the
 // widest ISA of array_kernel_isa(); call only if simd_pressure_available().
 void simd_pressure(const SimdWavinessZone& zone, Form form, const double* x, double* p, std::size_t count);
+
+// p at one point x, |x| <= b1, by the same arithmetic; as above.
+double simd_point_pressure(const SimdWavinessZone& zone, Form form, double x);
 
 // p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period); as above.
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count);

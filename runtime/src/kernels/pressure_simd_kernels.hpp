@@ -42,25 +42,41 @@ struct Atoms {
 // [0, pi/2], so its first term is at most twice the result): every atom keeps its relative
 // accuracy, Cx where cos x^ -> 0, D at the zone's edge, Sx at its centre. Outside the zone
 // the values are finite and discarded. sin_a = sin a^, cos_a = cos a^. Without with_cosine, Cx
-// is left unwritten (the roughness takes 1 + cos x^ as 2 - Sx).
+// is left unwritten (the roughness takes 1 + cos x^ as 2 - Sx). atoms_at is one point's, the
+// loop's body, inlined there so that the loop vectorises.
+struct PointAtoms {
+  double r, Cx, Sx, D;
+};
+
+template <bool with_cosine>
+inline PointAtoms atoms_at(double b1, double a, double sin_a, double cos_a, double x) {
+  const double period = 2 * b1, inv_period = 0.5 / b1;
+  PointAtoms out;
+  out.r = std::fabs(std::fma(-std::nearbyint(x * inv_period), period, x));
+  const double d = (a - out.r) * inv_period;
+  const double sin_h = generated::sinpi_quarter(out.r * inv_period);
+  const double sin_d = generated::sinpi_quarter(d);
+  const double sin_half_d = generated::sinpi_quarter(d * 0.5);
+  out.Sx = 2 * sin_h * sin_h;
+  const double cos_d = std::fma(-2 * sin_half_d, sin_half_d, 1.0);
+  if constexpr (with_cosine) {
+    const double w = (b1 - 2 * out.r) * inv_period;
+    out.Cx = w <= 0.25 ? generated::sinpi_quarter(w) : 1 - out.Sx;
+  } else {
+    out.Cx = 0;
+  }
+  out.D = 2 * sin_d * std::fma(sin_a, cos_d, -cos_a * sin_d);
+  return out;
+}
+
 template <bool with_cosine>
 void compute_atoms(double b1, double a, double sin_a, double cos_a, const double* x, Atoms& out) {
-  const double period = 2 * b1, inv_period = 0.5 / b1;
   for (std::size_t k = 0; k < block; ++k) {
-    const double r = std::fabs(std::fma(-std::nearbyint(x[k] * inv_period), period, x[k]));
-    const double d = (a - r) * inv_period;
-    const double sin_h = generated::sinpi_quarter(r * inv_period);
-    const double sin_d = generated::sinpi_quarter(d);
-    const double sin_half_d = generated::sinpi_quarter(d * 0.5);
-    const double Sx = 2 * sin_h * sin_h;
-    const double cos_d = std::fma(-2 * sin_half_d, sin_half_d, 1.0);
-    out.r[k] = r;
-    out.Sx[k] = Sx;
-    if constexpr (with_cosine) {
-      const double w = (b1 - 2 * r) * inv_period;
-      out.Cx[k] = w <= 0.25 ? generated::sinpi_quarter(w) : 1 - Sx;
-    }
-    out.D[k] = 2 * sin_d * std::fma(sin_a, cos_d, -cos_a * sin_d);
+    const PointAtoms atoms = atoms_at<with_cosine>(b1, a, sin_a, cos_a, x[k]);
+    out.r[k] = atoms.r;
+    out.Sx[k] = atoms.Sx;
+    if constexpr (with_cosine) out.Cx[k] = atoms.Cx;
+    out.D[k] = atoms.D;
   }
 }
 
@@ -246,6 +262,16 @@ void pressure_kernel(const SimdWavinessZone& z, Form form, const double* x, doub
       return generated::waviness_pressure_paper(E, H1, b1, m, Ca, Sa, Cx, Sx, D);
     });
   }
+}
+
+// p at one point x, |x| <= b1 (the caller reduces it to the period), by the arithmetic of
+// pressure_kernel: one call's latency, not a block's.
+double point_pressure_kernel(const SimdWavinessZone& z, Form form, double x) {
+  const PointAtoms atoms = atoms_at<true>(z.b1, z.a, z.sin_a, z.Ca, x);
+  if (!(atoms.r < z.a)) return 0;
+  return form == Form::exact
+             ? generated::waviness_pressure_exact(z.E, z.H1, z.b1, z.m, z.Ca, z.Sa, atoms.Cx, atoms.Sx, atoms.D)
+             : generated::waviness_pressure_paper(z.E, z.H1, z.b1, z.m, z.Ca, z.Sa, atoms.Cx, atoms.Sx, atoms.D);
 }
 
 void add_roughness_kernel(const RoughnessZone& z, const double* x, double* p, std::size_t count) {
