@@ -1,16 +1,20 @@
 // The cost floor of the waviness array kernel: the exact pressure (generated/waviness_evaluators.hpp's
-// formula) written plainly, compiled with -O3 -ffast-math -mavx2 -mfma (bench/CMakeLists.txt)
-// so that glibc's vectorised cos (libmvec) and reciprocal multiplications serve it. Careless
-// near the zone's edge (D = Cx - Ca cancels) and far from the 4 eps the library keeps: a
-// baseline for speed only.
+// formula) written plainly, compiled with -O3 -ffast-math once per array-kernel path
+// (bench/CMakeLists.txt defines WAVECONTACT_PLAIN_ISA and the ISA's flags), so that glibc's
+// vectorised cos (libmvec) and reciprocal multiplications serve it. Careless near the zone's
+// edge (D = Cx - Ca cancels) and far from the 4 eps the library keeps: a baseline for speed
+// only.
+#include <cmath>
+
 #include "plain_kernel.hpp"
 
-#include <cmath>
+#define WAVECONTACT_PLAIN_NAME_(isa) plain_waviness_pressure_##isa
+#define WAVECONTACT_PLAIN_NAME(isa) WAVECONTACT_PLAIN_NAME_(isa)
 
 namespace wavecontact::bench {
 
-void plain_waviness_pressure(double E, double H1, double b1, double m, double a, const double* x, double* p,
-                             std::size_t count) {
+void WAVECONTACT_PLAIN_NAME(WAVECONTACT_PLAIN_ISA)(double E, double H1, double b1, double m, double a, const double* x,
+                                                   double* p, std::size_t count) {
   const double pi = 3.14159265358979323846;
   const double Ca = std::cos(pi * a / b1), k = pi / (4 * b1) * E * H1 * (1 + m);
   for (std::size_t i = 0; i < count; ++i) {

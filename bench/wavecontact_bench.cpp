@@ -15,8 +15,10 @@
 #include "emit/file_contents.hpp"  // derive/
 #include "formulas/roughness.hpp"  // derive/
 #include "kinked_reference.hpp"    // tests/
+#include "bench_inputs.hpp"
 #include "plain_kernel.hpp"
 #include "wavecontact/angles.hpp"
+#include "wavecontact/isa.hpp"
 #include "wavecontact/numerical_inversion.hpp"
 #include "wavecontact/stability.hpp"
 #include "wavecontact/threads.hpp"
@@ -29,13 +31,10 @@ namespace {
 
 using namespace wavecontact;
 
+using bench::half_width;
+using bench::waviness;
+using bench::zone_points;
 using boost::math::double_constants::pi;
-const WavinessParams waviness{1.0, 10.0, 2.0, 1.0};
-constexpr double half_width = 4.0;  // a/b1 = 0.4
-
-Eigen::ArrayXd zone_points(Eigen::Index count, double a) {
-  return Eigen::ArrayXd::LinSpaced(count, -0.999 * a, 0.999 * a);
-}
 
 // G(x^) = -(E/2) y'(x^) of the waviness, written from eq. 2 (as in the tests).
 double waviness_rhs(double v) {
@@ -69,6 +68,7 @@ void BM_waviness_pressure_generated(benchmark::State& state) {
   }
   set_array_kernel_threads(0);
   state.SetItemsProcessed(state.iterations() * xs.size());
+  state.SetLabel(isa_name(array_kernel_isa()));
 }
 BENCHMARK(BM_waviness_pressure_generated)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
@@ -107,22 +107,22 @@ void BM_waviness_pressure_scalar_libm(benchmark::State& state) {
 }
 BENCHMARK(BM_waviness_pressure_scalar_libm)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
-// The plain fast-math kernel (plain_kernel.cpp): the cost floor of the same formula.
-void BM_waviness_pressure_plain_fast_math(benchmark::State& state) {
-  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
-    state.SkipWithError("the plain kernel is built for AVX2 + FMA");
-    return;
-  }
+// The plain fast-math kernel (plain_kernel.cpp) built for the path the array kernels take
+// (array_kernel_isa(); scripts/bench.sh runs each path): the cost floor of the same formula.
+void BM_waviness_pressure_plain_same_isa(benchmark::State& state) {
+  const Isa isa = array_kernel_isa();
+  const bench::PlainKernel plain = bench::plain_waviness_pressure(isa);
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
   Eigen::ArrayXd p(xs.size());
   for (auto _ : state) {
-    bench::plain_waviness_pressure(waviness.E, waviness.H1, waviness.b1, waviness.m, half_width, xs.data(), p.data(),
-                                   static_cast<std::size_t>(xs.size()));
+    plain(waviness.E, waviness.H1, waviness.b1, waviness.m, half_width, xs.data(), p.data(),
+          static_cast<std::size_t>(xs.size()));
     benchmark::DoNotOptimize(p.data());
   }
   state.SetItemsProcessed(state.iterations() * xs.size());
+  state.SetLabel(isa_name(isa));
 }
-BENCHMARK(BM_waviness_pressure_plain_fast_math)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_waviness_pressure_plain_same_isa)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 void BM_waviness_pressure_no_cse(benchmark::State& state) {
   const Eigen::ArrayXd xs = zone_points(state.range(0), half_width);
@@ -238,7 +238,7 @@ BENCHMARK(BM_load_beyond_half);
 // (tests/kinked_reference.hpp, long double).
 std::vector<double> points_over_zone() {
   std::vector<double> xs;
-  for (int i = 0; i < 100; ++i) xs.push_back(7.5 * (i + 0.5) / 100);
+  for (int i = 0; i < 100; ++i) xs.push_back(bench::half_width_beyond * (i + 0.5) / 100);
   return xs;
 }
 
@@ -251,7 +251,7 @@ std::vector<double> points_near_kink() {
 }
 
 void pressure_points(benchmark::State& state, const std::vector<double>& xs, bool quadrature) {
-  const double a = 7.5;
+  const double a = bench::half_width_beyond;
   for (auto _ : state) {
     double sum = 0;
     for (double x : xs) {
@@ -273,11 +273,11 @@ BENCHMARK(BM_pressure_beyond_half_near_kink);
 // The same zone as an array of 10^4 points, on one thread: the zone's atoms once, the Cauchy
 // part's atoms tabulated in log(1 + y) (runtime/src/closed_forms/cauchy_atom_table.hpp).
 void BM_pressure_beyond_half_array(benchmark::State& state) {
-  const Eigen::ArrayXd xs = Eigen::ArrayXd::LinSpaced(state.range(0), -0.999 * 7.5, 0.999 * 7.5);
+  const Eigen::ArrayXd xs = zone_points(state.range(0), bench::half_width_beyond);
   Eigen::ArrayXd p(xs.size());
   set_array_kernel_threads(1);
   for (auto _ : state) {
-    pressure(waviness, 7.5, xs, p);
+    pressure(waviness, bench::half_width_beyond, xs, p);
     benchmark::DoNotOptimize(p.data());
   }
   set_array_kernel_threads(0);

@@ -6,14 +6,21 @@ import re
 import sys
 
 
+def markdown_files(places):
+    """The .md files among `places` (a path or a list of paths): a folder's, sorted, or a file."""
+    for place in [places] if isinstance(places, str) else places:
+        if os.path.isdir(place):
+            yield from (os.path.join(place, f) for f in sorted(os.listdir(place)) if f.endswith(".md"))
+        else:
+            yield place
+
+
 def rewrite(docs, kind, tables, run_name):
-    """Rewrites every `kind` table of the .md files in `docs`. `tables` maps a name to a
-    function that returns the table's lines, or None when the run lacks its figures (the table
-    is then left as it was). An unknown name or a missing end marker stops the script."""
-    for file in sorted(os.listdir(docs)):
-        if not file.endswith(".md"):
-            continue
-        path = os.path.join(docs, file)
+    """Rewrites every `kind` table of the .md files in `docs` (a folder, a file, or a list of
+    them). `tables` maps a name to a function that returns the table's lines, or None when the
+    run lacks its figures (the table is then left as it was). An unknown name or a missing end
+    marker stops the script."""
+    for path in markdown_files(docs):
         text = open(path).read()
         changed = text
         for name in re.findall(rf"<!-- {kind}:([a-z0-9-]+) -->", text):

@@ -88,3 +88,45 @@ def test_derivation_times_table_gives_the_ratio_where_both_ran(tmp_path, source_
     text = page.read_text()
     assert "| 8 | 800 ms → 8 ms | 100× | 800 ms → 4 ms | 200× |" in text
     assert "| 256 | → 256 ms |  | → 128 ms |  |" in text
+
+
+def kernel_run(path, isa, ours_ns, plain_ns):
+    """A --isa-run: the waviness kernel and the plain kernel of one path, ns a point."""
+    write_run(path, [benchmark("BM_waviness_pressure_generated/1000000", ours_ns * 1e-3, label=isa,
+                               items_per_second=1e9 / ours_ns),
+                     benchmark("BM_waviness_pressure_plain_same_isa/1000000", plain_ns * 1e-3, label=isa,
+                               items_per_second=1e9 / plain_ns)])
+
+
+def test_near_limit_table_compares_each_path_with_its_own_plain_kernel(tmp_path, source_dir):
+    docs = tmp_path / "docs"
+    docs.mkdir()
+    readme = tmp_path / "README.md"
+    readme.write_text("<!-- bench:near-limit -->\n<!-- /bench:near-limit -->\n")
+    latency = {"BM_point_zone/0": 25, "BM_point_zone/1": 900, "BM_point_free_function/0": 120,
+               "BM_point_free_function/1": 2500, "BM_ten_points_zone": 210}
+    results = tmp_path / "results.json"
+    write_run(results, [benchmark(name, ns * 1e-6, items_per_second=1e9 / ns) for name, ns in latency.items()])
+    runs = []
+    # A CPU without AVX-512: the avx512 run is capped at avx2 and must not make a second row.
+    for isa, ran_as, ours, plain in (("scalar", "scalar", 9.0, 7.0), ("avx2", "avx2", 4.0, 2.0),
+                                     ("avx512", "avx2", 4.1, 2.1)):
+        kernel_run(tmp_path / f"results_{isa}.json", ran_as, ours, plain)
+        runs += ["--isa-run", str(tmp_path / f"results_{isa}.json")]
+    python = tmp_path / "python.txt"
+    python.write_text("python_pressure_ns_per_point 2.6\npython_point_free_function_ns 250\n"
+                      "python_point_zone_ns 180\npython_ten_points_free_function_ns 1200\n"
+                      "python_ten_points_zone_ns 700\n")
+    script = os.path.join(source_dir, "scripts", "bench_report.py")
+    r = subprocess.run([sys.executable, script, str(results), *runs, "--python", str(python), "--docs", str(readme)],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    text = readme.read_text()
+    assert "| waviness array, 10⁶ points, one thread, a point (scalar path) | 9 ns | the plain formula, same path " \
+           "| 7 ns | 1.29× | ≤ 1.5× (met) |" in text
+    assert "(avx2 path) | 4 ns | the plain formula, same path | 2 ns | 2.00× | ≤ 1.5× (missed) |" in text
+    assert text.count("avx2 path") == 1
+    assert "| one point, WavinessZone, a ≤ b1/2 | 25 ns |  |  |  | ≤ 30 ns (met) |" in text
+    assert "| one point, WavinessZone, a = 0.75 b1 | 900 ns |  |  |  | ≤ 200 ns (missed) |" in text
+    assert "| Python: one point, wavecontact.pressure | 250 ns |  |  |  | ≤ 300 ns (met) |" in text
+    assert "| Python: ten points, wavecontact.pressure | 1.2 µs |  |  |  | ≤ 1 µs (missed) |" in text
