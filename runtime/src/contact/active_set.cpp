@@ -26,13 +26,14 @@ constexpr double shortest_piece = 0.02;  // a shorter piece is dropped
 // on top of the 16 of a cap, so that the density of a zone that spans several asperities is
 // resolved before Newton's method meets it; and for a zone across a kink, eight for each
 // window radius of its extent in s, so that the window's edges are resolved (coarser, the
-// collocation has roots with the ends far from the contact's). And for a zone whose end lies
-// a distance g from the next zone's (or from its own mirror image beyond the top or the
-// valley), 12 sqrt(width / g): the neighbour's density, which falls like a root at its end,
-// gives this zone's right-hand side a branch point g beyond its end, where Chebyshev series
-// converge like exp(-2 N sqrt(g / width)); coarser, Newton's method stalls as two zones
-// nearly touch. Whether any zone grew.
-bool fit_nodes(Configuration& c, const SurfaceModel& surface) {
+// collocation has roots with the ends far from the contact's). With near_neighbours, also
+// for a zone whose end lies a distance g from the next zone's (or from its own mirror image
+// beyond the top or the valley), 12 sqrt(width / g): the neighbour's density, which falls like
+// a root at its end, gives this zone's right-hand side a branch point g beyond its end, where
+// Chebyshev series converge like exp(-2 N sqrt(g / width)); coarser, Newton's method can
+// stall as two zones nearly touch. Asked for only where it did (a zone keeps its nodes
+// through the later loads of a sweep). Whether any zone grew.
+bool fit_nodes(Configuration& c, const SurfaceModel& surface, bool near_neighbours = false) {
   bool grown = false;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
     ZoneUnknowns& z = c.zones[k];
@@ -45,7 +46,7 @@ bool fit_nodes(Configuration& c, const SurfaceModel& surface) {
     const double before = k == 0 ? 2 * z.geometry.a : z.geometry.a - c.zones[k - 1].geometry.b;
     const double after = k + 1 == c.zones.size() ? 2 * (pi - z.geometry.b) : c.zones[k + 1].geometry.a - z.geometry.b;
     const double nearest = std::min(z.geometry.a > 0 ? before : pi, z.geometry.b < pi ? after : pi);
-    if (nearest > 0) {
+    if (near_neighbours && nearest > 0) {
       const double near_nodes = 12 * std::sqrt((z.geometry.b - z.geometry.a) / nearest);
       if (near_nodes < most_working_nodes)
         needed = std::max(needed, static_cast<std::size_t>(std::ceil(near_nodes)));
@@ -190,7 +191,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
     if (r.outcome == ZoneSystem::Outcome::failed) {
       // Zones that came too near for their nodes, or a zone across a kink too coarse for its
       // density, may keep Newton from converging.
-      if (!fit_nodes(c, surface) && !grow_nodes(c, surface, 1e-6, kinked)) {
+      if (!fit_nodes(c, surface, true) && !grow_nodes(c, surface, 1e-6, kinked)) {
         char text[120];
         std::snprintf(text, sizeof text, "Newton's method did not converge on %zu zones (residual %.3g)",
                       c.zones.size(), r.residual);
