@@ -43,15 +43,15 @@ bool fit_nodes(Configuration& c, const SurfaceModel& surface, bool near_neighbou
     if (r > 0)
       needed = std::max(needed,
                         static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
-    const double before = k == 0 ? 2 * z.geometry.a : z.geometry.a - c.zones[k - 1].geometry.b;
-    const double after = k + 1 == c.zones.size() ? 2 * (pi - z.geometry.b) : c.zones[k + 1].geometry.a - z.geometry.b;
-    const double nearest = std::min(z.geometry.a > 0 ? before : pi, z.geometry.b < pi ? after : pi);
-    if (near_neighbours && nearest > 0) {
-      const double near_nodes = 12 * std::sqrt((z.geometry.b - z.geometry.a) / nearest);
-      if (near_nodes < most_working_nodes)
-        needed = std::max(needed, static_cast<std::size_t>(std::ceil(near_nodes)));
-      else
-        needed = most_working_nodes;
+    if (near_neighbours) {
+      const double before = k == 0 ? 2 * z.geometry.a : z.geometry.a - c.zones[k - 1].geometry.b;
+      const double after = k + 1 == c.zones.size() ? 2 * (pi - z.geometry.b) : c.zones[k + 1].geometry.a - z.geometry.b;
+      const double nearest = std::min(z.geometry.a > 0 ? before : pi, z.geometry.b < pi ? after : pi);
+      // nearest > 0: zones apart (a gap of 0 closes as a stretch first); the count bounded
+      // before its conversion.
+      const double near_nodes = nearest > 0 ? 12 * std::sqrt((z.geometry.b - z.geometry.a) / nearest) : 0.0;
+      needed = near_nodes < most_working_nodes ? std::max(needed, static_cast<std::size_t>(std::ceil(near_nodes)))
+                                               : static_cast<std::size_t>(most_working_nodes);
     }
     if (z.d.size() < std::min<std::size_t>(most_working_nodes, needed)) {
       z.d.resize(std::min<std::size_t>(most_working_nodes, needed), 0.0);
