@@ -37,6 +37,8 @@ class WavinessZone {
  private:
   friend void pressure(const WavinessParams&, double, const Eigen::Ref<const Eigen::ArrayXd>&,
                        Eigen::Ref<Eigen::ArrayXd>, Form);
+  // The zone, its refusals naming `function` (the free functions' own names).
+  WavinessZone(const char* function, const WavinessParams& params, double a, Form form);
   // The array evaluation, its refusals naming `function`.
   void fill(const char* function, const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
 

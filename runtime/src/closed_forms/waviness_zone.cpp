@@ -50,8 +50,11 @@ double kernel_point(const detail::SimdWavinessZone& zone, Form form, double x) {
 
 }  // namespace
 
-WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form) : params_(params), a_(a), form_(form) {
-  constexpr const char* function = "wavecontact::WavinessZone";
+WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form)
+    : WavinessZone("wavecontact::WavinessZone", params, a, form) {}
+
+WavinessZone::WavinessZone(const char* function, const WavinessParams& params, double a, Form form)
+    : params_(params), a_(a), form_(form) {
   validate(params, function);
   detail::require_waviness_half_width(function, params, a, form);
   angles_ = zone_angles(a, params.b1);
@@ -127,9 +130,7 @@ double pressure(const WavinessParams& params, double a, double x, Form form) {
 void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
               Eigen::Ref<Eigen::ArrayXd> p, Form form) {
   constexpr const char* function = "wavecontact::pressure";
-  validate(params, function);
-  detail::require_waviness_half_width(function, params, a, form);
-  WavinessZone(params, a, form).fill(function, x, p);
+  WavinessZone(function, params, a, form).fill(function, x, p);
 }
 
 Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
