@@ -180,7 +180,7 @@ ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const s
   // Halving while the residual's 2-norm grows (the merit function whose decrease a Newton
   // step guarantees; the largest residual need not fall with it). Within rounding, the merit
   // function's changes are rounding too: no backtracking.
-  const double merit = squares(at.F);
+  const double merit = squares(at.F), first = lambda;
   Linearisation next;
   for (int halving = 0;; ++halving, lambda /= 2) {
     next.layout = at.layout;
@@ -188,8 +188,25 @@ ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const s
     next.c = unpack(next.X, at.layout);
     next.F = residual(next.c, at.layout, &next.external_slope);
     next.step = lambda;
-    if (squares(next.F) < (1 - 1e-4 * lambda) * merit || at_rounding || halving == 8) return next;
+    if (squares(next.F) < (1 - 1e-4 * lambda) * merit || at_rounding || halving == 8) break;
   }
+  // Backtracked far, most often because the ends' move bends the collocation rows (their
+  // right-hand side's coefficients change like j^2 with an end where it holds features on a
+  // zone's scale, a kink window's for one): the coefficients and C are linear, so they are
+  // solved again for the damped step's ends, and that point taken if it is lower.
+  if (next.step < 0x1p-3 && !at_rounding) {
+    const Linearisation fixed = linearise(unpack(plus(at.X, first, step), at.layout), true);
+    std::vector<double> minus_F(fixed.F.size());
+    for (std::size_t i = 0; i < fixed.F.size(); ++i) minus_F[i] = -fixed.F[i];
+    Linearisation corrected;
+    corrected.layout = at.layout;
+    corrected.c = unpack(plus(fixed.X, 1, linear_solve(fixed, minus_F, 1e-3)), fixed.layout);
+    corrected.X = pack(corrected.c, at.layout);
+    corrected.F = residual(corrected.c, at.layout, &corrected.external_slope);
+    corrected.step = first;
+    if (squares(corrected.F) < squares(next.F)) return corrected;
+  }
+  return next;
 }
 
 Configuration ZoneSystem::perturbed(const Configuration& c, const std::vector<double>& shift) const {
