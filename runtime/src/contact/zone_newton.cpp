@@ -143,12 +143,12 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
     const Damping damped = damping(at.c, unpack(plus(at.X, 1, step), L));
-    // A full step that would close the stretch twice running within a thousandth of a
-    // resolution, or a stretch already next to nothing, is an event: a gap between zones
+    // A full step that would close the stretch twice running within closing_ resolutions
+    // (narrow_closing()), or a stretch already next to nothing, is an event: a gap between zones
     // closing, a zone reaching the top or the valley, or a zone vanishing. (Within a whole
     // resolution, gaps that stay open but narrow, as between the pieces of a zone cut at a
     // tension, were closed, and the cut undone, until the changes ran out.)
-    const double near = 1e-3 * surface_.resolution;
+    const double near = closing_ * surface_.resolution;
     if ((damped.overshoots() && closing == damped.limiting && damped.length < near) ||
         (damped.lambda < 1 && damped.length - damped.lambda * damped.shrink < 1e-9 * pi)) {
       result.stretch = damped.limiting;
