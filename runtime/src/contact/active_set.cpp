@@ -177,7 +177,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   const auto consistent = [&](Configuration& z) {
     fit_nodes(z, surface);
     system.relax(z);
-    z = system.newton(std::move(z), working_residual, checkpoint, true).configuration;
+    z = system.newton(std::move(z), consistent_residual, checkpoint, true).configuration;
   };
   consistent(c);
   for (int change = 0; change <= changes; ++change) {
