@@ -99,8 +99,7 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   // (by four at least: below, its rounding is reached).
   std::vector<double> difference, previous(c.zones.size(), std::numeric_limits<double>::infinity());
   std::vector<bool> converging(c.zones.size(), true);
-  const double highest =
-      verify(ContactSolution(surface, c), gap_tolerance * range, pressure_tolerance).highest_pressure;
+  const double highest = highest_sampled_pressure(ContactSolution(surface, c));
   // A zone already at its most nodes cannot double: its estimate is its change from half as many.
   const auto most = [](const ZoneUnknowns& z) {
     return static_cast<std::size_t>(z.kink_window > 0 ? most_kinked_nodes : most_nodes);

@@ -33,6 +33,9 @@ struct Verification {
 
 Verification verify(const ContactSolution& solution, double gap_tolerance, double pressure_tolerance);
 
+// The highest pressure at verify()'s samples of the zones (the gap left unchecked).
+double highest_sampled_pressure(const ContactSolution& solution);
+
 // The local minima of f over the samples (x sorted), each refined by Brent's method between
 // its neighbours: (x, f(x)) pairs; only those sampled at or below `at_most`.
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
