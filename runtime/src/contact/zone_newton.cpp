@@ -138,7 +138,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       result.residual = lowest_residual;
       return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
-    const std::vector<double> step = newton_step(at, result.residual);
+    const std::vector<double> step = newton_step(at, result.residual, tolerance);
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
@@ -166,12 +166,13 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   return finish(Outcome::failed);
 }
 
-std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double residual) const {
+std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double residual, double tolerance) const {
   // The linear solve's tolerance falls like the root of the residual: superlinear
-  // convergence without over-solving the first, far steps (Eisenstat and Walker).
+  // convergence without over-solving the first, far steps (Eisenstat and Walker); nor the
+  // last: a tenth of what takes the residual below Newton's tolerance is enough.
   std::vector<double> minus_F(at.F.size());
   for (std::size_t i = 0; i < at.F.size(); ++i) minus_F[i] = -at.F[i];
-  const double forcing = std::min(1e-2, std::max(1e-6, 0.1 * std::sqrt(residual)));
+  const double forcing = std::min(1e-2, std::max({1e-6, 0.1 * std::sqrt(residual), 0.1 * tolerance / residual}));
   return linear_solve(at, minus_F, forcing);
 }
 

@@ -142,8 +142,9 @@ class ZoneSystem {
   };
   Linearisation linearise(Configuration c, bool ends_fixed) const;
   // Newton's step s = -J^-1 F at `at`, whose largest scaled residual is `residual`, by
-  // linear_solve to a tolerance that falls with the residual.
-  std::vector<double> newton_step(const Linearisation& at, double residual) const;
+  // linear_solve to a tolerance that falls with the residual, no finer than Newton's
+  // `tolerance` needs.
+  std::vector<double> newton_step(const Linearisation& at, double residual, double tolerance) const;
   // The point lambda s from `at` along Newton's step s, lambda halved up to 8 times while the
   // residual's 2-norm does not fall (not at all at the rounding floor); halved more than
   // thrice, the first lambda's ends with the coefficients and C solved again, if lower.
