@@ -16,6 +16,7 @@
 #include "contact_commands.hpp"
 #include "decimal_option.hpp"
 #include "exit_status.hpp"
+#include "map_command.hpp"
 #include "options.hpp"
 #include "refusals.hpp"
 #include "reproduce.hpp"
@@ -61,7 +62,8 @@ struct Commands {
   std::vector<std::string> only;
   double optimize_ratio = 0, optimize_m_max = 100;
   int kcoef_n = 0;
-  CLI::App *pressure, *load, *solve, *contact, *curve, *reproduce, *optimize, *kcoef;
+  MapArguments map_arguments;
+  CLI::App *pressure, *load, *solve, *contact, *curve, *reproduce, *optimize, *kcoef, *map;
 
   Commands();
   Commands(const Commands&) = delete;
@@ -110,6 +112,11 @@ Commands::Commands() {
       "optimize-shape", "the shape m of the wave curve whose pressure is most uniform (min max p / mean p) at a load");
   optimize->add_option("--pa-over-pstar", optimize_ratio, "the load, as pa/p* > 0")->required();
   optimize->add_option("--m-max", optimize_m_max, "search 0 <= m <= m-max")->capture_default_str();
+
+  map = app.add_subcommand("map",
+                           "the contact over a grid of m, H2, n and the load, on all cores, into a CSV file that a "
+                           "rerun completes: contact fraction, zones, p(0), max p, error estimate, status");
+  map_arguments.add_to(map);
 
   kcoef = app.add_subcommand("kcoef", "the exact coefficients k_j of eq. 18");
   kcoef->add_option("--n", kcoef_n, "wavelength ratio n, even >= 2")->required();
@@ -185,7 +192,8 @@ std::string command_output(const Commands& c, std::ostream& err, bool allow_file
   if (*c.curve) return curve_table(c.curve_profile.two_scale(), c.points);
   if (*c.optimize) return shape_row(c.optimize_ratio, c.optimize_m_max);
   if (*c.kcoef) return kcoef_rows(c.kcoef_n);
-  if (!allow_files) throw UsageError("reproduce is disabled here (it writes files)");
+  if (!allow_files) throw UsageError("reproduce and map are disabled here (they write files)");
+  if (*c.map) return cli::run_map(c.map_arguments, err);
   cli::reproduce(c.out_dir, c.only, err);
   return "";
 }
