@@ -164,8 +164,7 @@ double coefficient_tail(const std::vector<double>& d) {
 SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P, Configuration c, int changes,
                      const Checkpoint& checkpoint) {
   const SurfaceModel& surface = *model;
-  ZoneSystem system(surface, P);
-  std::vector<double> tension_sites;  // every tension cut so far
+  const ZoneSystem system(surface, P);
   const auto kinked = [&](const ZoneUnknowns& z) {
     return std::any_of(surface.kinks.begin(), surface.kinks.end(),
                        [&](const Kink& k) { return k.angle > z.geometry.a && k.angle < z.geometry.b; });
@@ -215,14 +214,6 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         }
       }
       if (v.tensions.empty() && v.penetrations.empty()) return {std::move(c), {}};
-      // A tension where one was cut before: the cut's gap closed again as an event, but it
-      // is real and narrower than the events' threshold.
-      const bool again = std::any_of(v.tensions.begin(), v.tensions.end(), [&](const Tension& t) {
-        return std::any_of(tension_sites.begin(), tension_sites.end(),
-                           [&](double x) { return std::fabs(x - t.x) < 1e-2 * surface.resolution; });
-      });
-      if (again) system.narrow_closing();
-      for (const Tension& t : v.tensions) tension_sites.push_back(t.x);
       cut_zones(c, v.tensions, surface.resolution);
       if (v.tensions.empty()) open_zones(c, v.penetrations, surface.resolution);
       if (c.zones.empty()) return {std::nullopt, "every zone was cut away"};

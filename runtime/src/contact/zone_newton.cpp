@@ -120,7 +120,8 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   double best = std::numeric_limits<double>::infinity();  // the last residual that halved the one before
   Configuration lowest;                                   // the iterate of the lowest residual so far
   double lowest_residual = std::numeric_limits<double>::infinity();
-  int stalled = 0;  // iterations without halving the best residual
+  int stalled = 0;           // iterations without halving the best residual
+  bool coarse_steps = true;  // linear solves no finer than the tolerance needs (newton_step)
   for (int iteration = 0; iteration < 40; ++iteration) {
     result.iterations = iteration;
     result.residual = largest(at.F);
@@ -138,17 +139,17 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       result.residual = lowest_residual;
       return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
-    const std::vector<double> step = newton_step(at, result.residual, tolerance);
+    const std::vector<double> step = newton_step(at, result.residual, coarse_steps ? tolerance : 0.0);
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
     const Damping damped = damping(at.c, unpack(plus(at.X, 1, step), L));
-    // A full step that would close the stretch twice running within closing_ resolutions
-    // (narrow_closing()), or a stretch already next to nothing, is an event: a gap between zones
+    // A full step that would close the stretch twice running within a thousandth of a
+    // resolution, or a stretch already next to nothing, is an event: a gap between zones
     // closing, a zone reaching the top or the valley, or a zone vanishing. (Within a whole
     // resolution, gaps that stay open but narrow, as between the pieces of a zone cut at a
     // tension, were closed, and the cut undone, until the changes ran out.)
-    const double near = closing_ * surface_.resolution;
+    const double near = 1e-3 * surface_.resolution;
     if ((damped.overshoots() && closing == damped.limiting && damped.length < near) ||
         (damped.lambda < 1 && damped.length - damped.lambda * damped.shrink < 1e-9 * pi)) {
       result.stretch = damped.limiting;
@@ -156,6 +157,9 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     }
     closing = damped.overshoots() ? damped.limiting : std::numeric_limits<std::size_t>::max();
     Linearisation next = backtrack(at, step, damped.lambda, result.residual < rounding_reached);
+    // A step that had to be cut far may be one the coarse linear solve spoiled: from then on
+    // the linear solves go to the forcing term alone.
+    if (next.step < 0x1p-3) coarse_steps = false;
     if (tracing()) {
       std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", next.step,
                    damped.limiting, damped.lambda);
@@ -181,7 +185,7 @@ ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const s
   // Halving while the residual's 2-norm grows (the merit function whose decrease a Newton
   // step guarantees; the largest residual need not fall with it). Within rounding, the merit
   // function's changes are rounding too: no backtracking.
-  const double merit = squares(at.F), first = lambda;
+  const double merit = squares(at.F);
   Linearisation next;
   for (int halving = 0;; ++halving, lambda /= 2) {
     next.layout = at.layout;
@@ -189,25 +193,8 @@ ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const s
     next.c = unpack(next.X, at.layout);
     next.F = residual(next.c, at.layout, &next.external_slope);
     next.step = lambda;
-    if (squares(next.F) < (1 - 1e-4 * lambda) * merit || at_rounding || halving == 8) break;
+    if (squares(next.F) < (1 - 1e-4 * lambda) * merit || at_rounding || halving == 8) return next;
   }
-  // Backtracked far, most often because the ends' move bends the collocation rows (their
-  // right-hand side's coefficients change like j^2 with an end where it holds features on a
-  // zone's scale, a kink window's for one): the coefficients and C are linear, so they are
-  // solved again for the damped step's ends, and that point taken if it is lower.
-  if (next.step < 0x1p-3 && !at_rounding) {
-    const Linearisation fixed = linearise(unpack(plus(at.X, first, step), at.layout), true);
-    std::vector<double> minus_F(fixed.F.size());
-    for (std::size_t i = 0; i < fixed.F.size(); ++i) minus_F[i] = -fixed.F[i];
-    Linearisation corrected;
-    corrected.layout = at.layout;
-    corrected.c = unpack(plus(fixed.X, 1, linear_solve(fixed, minus_F, 1e-3)), fixed.layout);
-    corrected.X = pack(corrected.c, at.layout);
-    corrected.F = residual(corrected.c, at.layout, &corrected.external_slope);
-    corrected.step = first;
-    if (squares(corrected.F) < squares(next.F)) return corrected;
-  }
-  return next;
 }
 
 Configuration ZoneSystem::perturbed(const Configuration& c, const std::vector<double>& shift) const {

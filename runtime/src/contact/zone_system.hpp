@@ -9,7 +9,6 @@
 // zone): the far fields are smooth and, beyond the loads', small.
 #pragma once
 
-#include <algorithm>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -113,11 +112,6 @@ class ZoneSystem {
   // system of the coefficients and C alone: a consistent start for given zones).
   Result newton(Configuration c, double tolerance, const Checkpoint& checkpoint, bool ends_fixed = false) const;
 
-  // A step that would close a stretch narrower than this many resolutions twice running is
-  // an event (newton()): a thousandth, narrowed tenfold (down to a millionth) where a cut at
-  // a tension keeps being undone, since the gap it opens is real and that narrow.
-  void narrow_closing() { closing_ = std::max(most_narrow_closing, 0.1 * closing_); }
-
   // Whether every zone's kink window lies within the zone (ends move during a solve; a
   // window that no longer fits is chosen again by the next).
   bool windows_fit(const Configuration& c) const;
@@ -143,11 +137,10 @@ class ZoneSystem {
   Linearisation linearise(Configuration c, bool ends_fixed) const;
   // Newton's step s = -J^-1 F at `at`, whose largest scaled residual is `residual`, by
   // linear_solve to a tolerance that falls with the residual, no finer than Newton's
-  // `tolerance` needs.
+  // `tolerance` needs (0: as fine as the forcing term asks).
   std::vector<double> newton_step(const Linearisation& at, double residual, double tolerance) const;
   // The point lambda s from `at` along Newton's step s, lambda halved up to 8 times while the
-  // residual's 2-norm does not fall (not at all at the rounding floor); halved more than
-  // thrice, the first lambda's ends with the coefficients and C solved again, if lower.
+  // residual's 2-norm does not fall (not at all at the rounding floor).
   Linearisation backtrack(const Linearisation& at, const std::vector<double>& step, double lambda,
                           bool at_rounding) const;
   // J s = rhs at `at`, to the relative tolerance, by preconditioned GMRES.
@@ -159,10 +152,8 @@ class ZoneSystem {
   std::vector<double> residual(const Configuration& c, const SystemLayout& L,
                                std::vector<std::vector<double>>* external_slope) const;
 
-  static constexpr double most_narrow_closing = 1e-6;
   const SurfaceModel& surface_;
   double P_;
-  double closing_ = 1e-3;
 };
 
 }  // namespace wavecontact::detail
