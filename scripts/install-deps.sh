@@ -17,6 +17,7 @@ packages=(
   libbenchmark-dev python3-sympy   # bench/ (Google Benchmark; SymPy is the baseline)
   pybind11-dev python3-dev python3-numpy  # python/: the extension module, for Debian's python3
   python3-pytest python3-matplotlib       # tests/python, examples/sweep.py
+  python3-distributed                     # wavecontact.map(client=...) on a Dask cluster, its tests
 )
 
 missing=()

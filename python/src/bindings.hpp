@@ -16,6 +16,7 @@ void bind_waviness(py::module_& m);
 void bind_two_scale(py::module_& m);
 void bind_profile(py::module_& m);
 void bind_contact(py::module_& m);
+void bind_map(py::module_& m);
 
 // x as a C-contiguous float64 array: the caller's own memory when it already is one (no
 // copy), otherwise converted once. Whatever is not real numbers (None, strings, complex

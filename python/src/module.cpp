@@ -11,4 +11,5 @@ PYBIND11_MODULE(_wavecontact, m) {
   wavecontact::python::bind_two_scale(m);
   wavecontact::python::bind_profile(m);
   wavecontact::python::bind_contact(m);
+  wavecontact::python::bind_map(m);
 }

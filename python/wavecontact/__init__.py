@@ -6,3 +6,4 @@ function, the parameter, its value and the valid range.
 """
 from ._wavecontact import *  # noqa: F401,F403
 from ._wavecontact import __version__  # noqa: F401
+from ._maps import MapResult, map  # noqa: F401,A001

@@ -269,3 +269,25 @@ class SingleZoneCheck:
     x_of_lowest_pressure: float
 
 def single_zone_check(surface: Surface, a: float) -> SingleZoneCheck: ...
+
+class MapResult:
+    """The contacts of a map: arrays of shape (len(m), len(H2), len(n), len(loads))."""
+    columns: tuple[str, ...]
+    m: np.ndarray
+    H2: np.ndarray
+    n: np.ndarray
+    P: np.ndarray
+    pa_over_pstar: np.ndarray
+    status: np.ndarray
+    zones: np.ndarray
+    contact_fraction: np.ndarray
+    p0: np.ndarray
+    max_p: np.ndarray
+    error_estimate: np.ndarray
+    message: np.ndarray
+    def __getitem__(self, column: str) -> np.ndarray: ...
+
+def map(H1: float, b1: float, E: float, *, m: float | Sequence[float] = ..., H2: float | Sequence[float] | None = ...,
+        n: int | Sequence[int] | None = ..., pa_over_pstar: float | Sequence[float] | None = ...,
+        P: float | Sequence[float] | None = ..., tolerance: float = ..., max_seconds: float = ..., threads: int = ...,
+        client: object | None = ...) -> MapResult: ...

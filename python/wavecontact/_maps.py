@@ -1,0 +1,92 @@
+"""Maps of shape and scale (docs/maps.md): the contact over a grid of the wave curve's shape m,
+a roughness harmonic's height H2 and wavelength ratio n, and the load, on this machine's
+cores or on a Dask cluster."""
+import numpy as np
+
+from . import _wavecontact
+
+_STATUS = np.array(["solved", "above_tolerance", "beyond_reach"])
+
+
+class MapResult:
+    """The contacts of a map, as NumPy arrays over the grid.
+
+    Every column is an array of shape (len(m), len(H2), len(n), len(loads)) (H2 and n of
+    length 1, holding 0, without roughness): ``status`` ("solved", "above_tolerance",
+    "beyond_reach"), ``zones`` (per period), ``contact_fraction``, ``p0``, ``max_p``,
+    ``error_estimate`` (NaN beyond reach) and ``message`` (why, beyond reach). The axes are
+    ``m``, ``H2``, ``n`` and the load as ``P`` and ``pa_over_pstar``. ``result["p0"]`` is
+    ``result.p0``.
+    """
+
+    columns = ("status", "zones", "contact_fraction", "p0", "max_p", "error_estimate", "message")
+    __slots__ = ("m", "H2", "n", "P", "pa_over_pstar") + columns
+
+    def __init__(self, axes, columns):
+        self.m, self.H2, self.n, self.P, self.pa_over_pstar = axes
+        shape = (len(self.m), len(self.H2), len(self.n), len(self.P))
+        status, zones, fraction, p0, max_p, estimate, messages = columns
+        self.status = _STATUS[np.asarray(status)].reshape(shape)
+        self.zones = np.asarray(zones).reshape(shape)
+        self.contact_fraction = np.asarray(fraction).reshape(shape)
+        self.p0 = np.asarray(p0).reshape(shape)
+        self.max_p = np.asarray(max_p).reshape(shape)
+        self.error_estimate = np.asarray(estimate).reshape(shape)
+        self.message = np.asarray(messages, dtype=object).reshape(shape)
+
+    def __getitem__(self, column):
+        """The column of that name (``columns``)."""
+        if column not in self.columns:
+            raise KeyError(f"wavecontact.MapResult: no column {column!r} (columns: {', '.join(self.columns)})")
+        return getattr(self, column)
+
+    def __repr__(self):
+        solved = int((self.status == "solved").sum())
+        return f"MapResult({self.status.size} points, {solved} solved, axes m x H2 x n x load = {self.status.shape})"
+
+
+def _axis(name, values, kind=float):
+    array = np.atleast_1d(np.asarray(values, dtype=kind))
+    if array.ndim != 1 or array.size == 0:
+        raise ValueError(f"wavecontact.map: {name} must be a number or a non-empty 1-d sequence")
+    return array
+
+
+def _solve_line(grid, line):
+    # A Dask task: one load line, in a worker process (module level, so that it pickles).
+    return _wavecontact._solve_map_line(**grid, line=line)
+
+
+def map(H1, b1, E, *, m=0.0, H2=None, n=None, pa_over_pstar=None, P=None, tolerance=1e-10, max_seconds=60.0,
+        threads=0, client=None):
+    """The contact at every point of the grid m x H2 x n x load, as a MapResult.
+
+    The loads (``pa_over_pstar`` or ``P``, ascending) of one (m, H2, n) are a load line,
+    solved by one continuation; without ``client`` the lines run on ``threads`` threads (0:
+    one a core), with a ``dask.distributed.Client`` they are its tasks, one a line. Either way
+    every point holds the same bits as ``solve_contact`` on its line's loads. ``H2`` and ``n``
+    go together; without them, the wave curve alone. Invalid input raises ValueError naming
+    the parameter.
+    """
+    if (H2 is None) != (n is None):
+        raise ValueError("wavecontact.map: H2 and n go together (neither: the wave curve alone)")
+    if (pa_over_pstar is None) == (P is None):
+        raise ValueError("wavecontact.map: give exactly one of pa_over_pstar, P")
+    shapes = _axis("m", m)
+    heights = _axis("H2", H2) if H2 is not None else np.zeros(0)
+    ratios = _axis("n", n, np.int64) if n is not None else np.zeros(0, dtype=np.int64)
+    loads = _axis("pa_over_pstar" if P is None else "P", pa_over_pstar if P is None else P)
+    grid = dict(H1=float(H1), b1=float(b1), E=float(E), m=shapes.tolist(), H2=heights.tolist(), n=ratios.tolist(),
+                loads=loads.tolist(), ratios=P is None, tolerance=float(tolerance), max_seconds=float(max_seconds))
+    pstar_load = np.pi * float(E) * float(H1)
+    axes = (shapes, heights if heights.size else np.zeros(1), ratios if ratios.size else np.zeros(1, dtype=np.int64),
+            loads * pstar_load if P is None else loads, loads if P is None else loads / pstar_load)
+    if client is None:
+        return MapResult(axes, _wavecontact._map_contacts(**grid, threads=int(threads)))
+    # Checked here, before any task: the same ValueError as the local run.
+    lines = _wavecontact._map_line_count(**grid)
+    futures = client.map(_solve_line, [grid] * lines, range(lines), pure=False)
+    parts = client.gather(futures)
+    columns = [np.concatenate([np.asarray(part[c]) for part in parts]) for c in range(6)]
+    columns.append([message for part in parts for message in part[6]])
+    return MapResult(axes, columns)
