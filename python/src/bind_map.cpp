@@ -22,15 +22,20 @@ MapGrid grid_of(double H1, double b1, double E, std::vector<double> m, std::vect
 // The columns of maps.py's MapResult, one entry a point, by index; unset rows keep status -1.
 struct Columns {
   explicit Columns(std::size_t count)
-      : status(count, -1), zones(count, 0), fraction(count), p0(count), max_p(count), estimate(count), messages(count) {}
+      : status(count, -1),
+        zones(count, 0),
+        fraction(count),
+        p0(count),
+        max_p(count),
+        estimate(count),
+        messages(count) {}
   void set(const MapPoint& p, std::size_t at) {
     status[at] = static_cast<int>(p.status), zones[at] = p.zones, fraction[at] = p.contact_fraction;
     p0[at] = p.p0, max_p[at] = p.max_p, estimate[at] = p.error_estimate, messages[at] = p.message;
   }
   py::tuple to_python() const {
     return py::make_tuple(py::array(py::cast(status)), py::array(py::cast(zones)), py::array(py::cast(fraction)),
-                          py::array(py::cast(p0)), py::array(py::cast(max_p)), py::array(py::cast(estimate)),
-                          messages);
+                          py::array(py::cast(p0)), py::array(py::cast(max_p)), py::array(py::cast(estimate)), messages);
   }
   std::vector<int> status, zones;
   std::vector<double> fraction, p0, max_p, estimate;
@@ -45,7 +50,8 @@ void bind_map(py::module_& m) {
       "_map_contacts",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
          std::vector<double> loads, bool ratios, double tolerance, double max_seconds, unsigned threads) {
-        const MapGrid grid = grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios);
+        const MapGrid grid =
+            grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios);
         Columns columns(grid.point_count());
         {
           py::gil_scoped_release release;
@@ -64,7 +70,8 @@ void bind_map(py::module_& m) {
       "_map_line_count",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
          std::vector<double> loads, bool ratios, double, double) {
-        return grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios).line_count();
+        return grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios)
+            .line_count();
       },
       "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
       "The map's load lines, once its grid is checked.");
@@ -72,7 +79,8 @@ void bind_map(py::module_& m) {
       "_solve_map_line",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
          std::vector<double> loads, bool ratios, double tolerance, double max_seconds, std::size_t line) {
-        const MapGrid grid = grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios);
+        const MapGrid grid =
+            grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios);
         if (line >= grid.line_count()) throw py::index_error("wavecontact.map: no line " + std::to_string(line));
         Columns columns(grid.loads.size());
         {
