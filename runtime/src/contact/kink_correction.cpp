@@ -120,7 +120,7 @@ double KinkCorrection::radius_for(const SurfaceModel& surface, const ZoneGeometr
   double room = 0;
   const Kink* kink = kink_inside(surface, zone, room);
   if (!kink) return 0;
-  double r = 0.9 * kink->radius;  // few windows, each computed once
+  double r = 0.5 * kink->radius;  // few windows, each computed once
   while (r > 0.9 * room) r *= 0.5;
   return r;
 }

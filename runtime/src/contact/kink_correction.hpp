@@ -29,9 +29,11 @@ namespace wavecontact::detail {
 
 class KinkCorrection {
  public:
-  // The window radius for a zone: the largest of the geometric grid 0.9 R 2^-k (R the
+  // The window radius for a zone: the largest of the geometric grid 0.5 R 2^-k (R the
   // branches' analyticity radius) within 0.9 of the room between the kink and the zone's
-  // ends, for the kink the zone holds well inside; 0 for none.
+  // ends, for the kink the zone holds well inside; 0 for none. (At 0.9 R, the slope jump
+  // varies on the window's own scale near its edges, and a zone ending near the kink had
+  // Newton's method creep: sweeps 891 and 1232 of the campaign.)
   static double radius_for(const SurfaceModel& surface, const ZoneGeometry& zone);
   // The correction of radius r of the kink inside the zone (nullptr for r = 0 or none); each
   // window is computed once and kept by the kink.
