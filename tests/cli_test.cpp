@@ -245,7 +245,7 @@ BOOST_AUTO_TEST_CASE(reproduce_writes_csv_and_png_into_any_path) {
   BOOST_TEST(!fs::exists("PWNED"));
   BOOST_TEST(!fs::exists(base / "PWNED"));
   for (const char* figure :
-       {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12"}) {
+       {"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6", "fig7", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13"}) {
     for (const char* extension : {".csv", ".png"}) {
       const fs::path file = out / (std::string(figure) + extension);
       BOOST_TEST(fs::exists(file), file);

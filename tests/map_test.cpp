@@ -1,7 +1,7 @@
 // `wavecontact map` and wavecontact::map_contacts (issue: maps of shape and scale): every row
-// the contact solve_contact gives for its load line, bit for bit, whatever the threads; a file
-// cut short or killed mid-run completed by a rerun, with no row lost or written twice; the
-// refusals.
+// the contact solve_contact gives for its load line, bit for bit, whatever the threads, over
+// H2 and n or a list of roughnesses; a file cut short or killed mid-run completed by a rerun,
+// with no row lost or written twice; the heat map's table; the refusals.
 #define BOOST_TEST_MODULE map
 #include <boost/test/unit_test.hpp>
 
@@ -116,15 +116,98 @@ BOOST_AUTO_TEST_CASE(rows_are_the_solved_contacts) {
         const std::vector<std::string> f = fields(rows.at(line * P.size() + j));
         const wavecontact::Contact& c = contacts[j];
         const std::string where = "m = " + digits(k.m[line]) + ", pa/p* = " + digits(k.loads[j]);
-        BOOST_TEST(f.at(4) == digits(P[j]), where);
-        BOOST_TEST(f.at(6) == "solved", where);
-        BOOST_TEST(f.at(7) == std::to_string(c.zones_per_period()), where);
-        BOOST_TEST(f.at(8) == digits(c.contact_fraction()), where);
-        BOOST_TEST(f.at(9) == digits(c.pressure(0)), where);
-        BOOST_TEST(f.at(10) == digits(c.max_pressure()), where);
-        BOOST_TEST(f.at(11) == digits(c.error_estimate()), where);
+        BOOST_TEST(f.at(4) == (k.n > 0 ? digits(k.H2) + ":" + std::to_string(k.n) : ""), where);
+        BOOST_TEST(f.at(5) == digits(P[j]), where);
+        BOOST_TEST(f.at(7) == "solved", where);
+        BOOST_TEST(f.at(8) == std::to_string(c.zones_per_period()), where);
+        BOOST_TEST(f.at(9) == digits(c.contact_fraction()), where);
+        BOOST_TEST(f.at(10) == digits(c.pressure(0)), where);
+        BOOST_TEST(f.at(11) == digits(c.max_pressure()), where);
+        BOOST_TEST(f.at(12) == digits(c.error_estimate()), where);
       }
     }
+  }
+}
+
+// A list of whole roughnesses as an axis: each row is solve_contact's for that roughness,
+// which the row names.
+BOOST_AUTO_TEST_CASE(a_list_of_roughnesses_is_an_axis) {
+  const fs::path out = scratch("harmonics.csv");
+  const CommandResult r = run(with_profile(
+      {"--m", "0,10", "--harmonics", "0.15:6+0.01:64,0.0375:32", "--pa-over-pstar", "0.3,1", "--out", out.string()}));
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const auto rows = rows_of(out);
+  BOOST_TEST_REQUIRE(rows.size() == 8u);
+  const std::vector<std::vector<wavecontact::Harmonic>> roughnesses{{{0.15, 6}, {0.01, 64}}, {{0.0375, 32}}};
+  const std::vector<std::string> names{digits(0.15) + ":6+" + digits(0.01) + ":64", digits(0.0375) + ":32"};
+  for (std::size_t i = 0; i < 2; ++i) {
+    for (std::size_t k = 0; k < roughnesses.size(); ++k) {
+      const wavecontact::Surface surface({1.0, 10.0, i == 0 ? 0.0 : 10.0, 1.0}, roughnesses[k]);
+      const std::vector<wavecontact::Contact> contacts = wavecontact::solve_contact(surface, {0.3 * M_PI, M_PI});
+      for (std::size_t j = 0; j < 2; ++j) {
+        const std::vector<std::string> f = fields(rows.at((i * 2 + k) * 2 + j));
+        BOOST_TEST(f.at(4) == names[k]);
+        BOOST_TEST(f.at(2) == (k == 0 ? std::string("nan") : digits(0.0375)));
+        BOOST_TEST(f.at(3) == (k == 0 ? "0" : "32"));
+        BOOST_TEST(f.at(8) == std::to_string(contacts[j].zones_per_period()), names[k]);
+        BOOST_TEST(f.at(9) == digits(contacts[j].contact_fraction()), names[k]);
+      }
+    }
+  }
+}
+
+// --plot: the table gnuplot draws holds each solved row's value at its place on the two axes,
+// and the PNG is whole.
+BOOST_AUTO_TEST_CASE(plot_draws_a_column_over_two_axes) {
+  const fs::path out = scratch("plotted.csv");
+  const CommandResult r =
+      run(with_profile({"--m", "0:4:3", "--H2", "0.02", "--n", "8", "--pa-over-pstar", "0.1:0.5:4:log", "--out",
+                        out.string(), "--plot", "zones", "--x", "m", "--y", "pa-over-pstar"}));
+  BOOST_TEST_REQUIRE(r.status == 0, r.err);
+  const fs::path table = out.parent_path() / "plotted-zones.csv", png = out.parent_path() / "plotted-zones.png";
+  BOOST_TEST(r.out.find("drew " + png.string()) != std::string::npos, r.out);
+  std::ifstream image(png, std::ios::binary);
+  std::string signature(8, '\0');
+  image.read(signature.data(), 8);
+  BOOST_TEST((signature == "\x89PNG\r\n\x1a\n"));
+  std::map<std::pair<std::string, std::string>, std::string> drawn;  // (m, pa/p*) -> zones
+  for (const std::string& line : lines_of(table)) {
+    if (line.empty() || line[0] == '#') continue;
+    const std::vector<std::string> f = fields(line);
+    drawn[{f.at(0), f.at(1)}] = f.at(2);
+  }
+  const auto rows = rows_of(out);
+  BOOST_TEST_REQUIRE(drawn.size() == rows.size());
+  for (const auto& [index, row] : rows) {
+    const std::vector<std::string> f = fields(row);
+    char m[40], ratio[40];
+    std::snprintf(m, sizeof m, "%.10g", std::stod(f.at(1)));
+    std::snprintf(ratio, sizeof ratio, "%.10g", std::stod(f.at(6)));
+    const std::string value = drawn[{m, ratio}];
+    BOOST_TEST(value == f.at(8), row);
+  }
+  BOOST_TEST(fs::exists(out.parent_path() / "plotted-zones.gp"));
+}
+
+BOOST_AUTO_TEST_CASE(bad_plots_are_refused_before_any_work) {
+  const fs::path out = scratch("refused_plot.csv");
+  const std::vector<std::string> grid{"--m", "0,1", "--H2", "0.02", "--n", "8,16", "--pa-over-pstar", "0.1,0.2"};
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--plot", "speed", "--x", "m", "--y", "n"}, "no column \"speed\""},
+      {{"--plot", "zones", "--x", "m", "--y", "m"}, "both m"},
+      {{"--plot", "zones", "--x", "m", "--y", "harmonics"}, "no axis \"harmonics\""},
+      {{"--plot", "zones", "--x", "m", "--y", "H2"}, "the axis H2 holds one value"},
+      {{"--plot", "zones", "--x", "m", "--y", "n"}, "the axis pa-over-pstar holds 2 values"},
+      {{"--plot", "zones"}, "--x"},
+  };
+  for (const auto& [plot, message] : cases) {
+    std::vector<std::string> arguments = with_profile(grid);
+    arguments.insert(arguments.end(), {"--out", out.string()});
+    arguments.insert(arguments.end(), plot.begin(), plot.end());
+    const CommandResult r = run(arguments);
+    BOOST_TEST(r.status == 2, message << ": " << r.err);
+    BOOST_TEST(r.err.find(message) != std::string::npos, r.err);
+    BOOST_TEST(!fs::exists(out), message);
   }
 }
 
@@ -230,6 +313,10 @@ BOOST_AUTO_TEST_CASE(bad_grids_are_refused_before_any_work) {
       {{"--m", "0x10", "--pa-over-pstar", "0.1"}, "\"0x10\" is not a decimal number"},
       {{"--m", "0", "--H2", "0.02", "--pa-over-pstar", "0.1"}, "--H2 and --n go together"},
       {{"--m", "0", "--H2", "0.02", "--n", "7", "--pa-over-pstar", "0.1"}, "n = 7"},
+      {{"--m", "0", "--harmonics", "0.02:8+0.01", "--pa-over-pstar", "0.1"}, "\"0.01\" is not H:n"},
+      {{"--m", "0", "--harmonics", "0.02:0", "--pa-over-pstar", "0.1"}, "n = 0"},
+      {{"--m", "0", "--H2", "0.02", "--n", "8", "--harmonics", "0.02:8", "--pa-over-pstar", "0.1"},
+       "either --H2 and --n or --harmonics"},
       {{"--m", "0:1:400", "--pa-over-pstar", "0.1:1:400"}, "give --force"},
   };
   for (const auto& [grid, message] : cases) {

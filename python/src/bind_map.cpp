@@ -9,11 +9,17 @@ namespace wavecontact::python {
 
 namespace {
 
+using Roughnesses = std::vector<std::vector<std::pair<double, int>>>;  // (H, n) of each harmonic
+
 MapGrid grid_of(double H1, double b1, double E, std::vector<double> m, std::vector<double> H2, std::vector<int> n,
-                std::vector<double> loads, bool ratios) {
+                const Roughnesses& harmonics, std::vector<double> loads, bool ratios) {
   MapGrid grid;
   grid.waviness = {H1, b1, m.empty() ? 0.0 : m.front(), E};
   grid.m = std::move(m), grid.H2 = std::move(H2), grid.n = std::move(n), grid.loads = std::move(loads);
+  for (const auto& roughness : harmonics) {
+    grid.harmonics.emplace_back();
+    for (const auto& [H, ratio] : roughness) grid.harmonics.back().push_back({H, ratio});
+  }
   grid.loads_are_ratios = ratios;
   validate(grid, "wavecontact.map");
   return grid;
@@ -49,9 +55,10 @@ void bind_map(py::module_& m) {
   m.def(
       "_map_contacts",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
-         std::vector<double> loads, bool ratios, double tolerance, double max_seconds, unsigned threads) {
+         const Roughnesses& harmonics, std::vector<double> loads, bool ratios, double tolerance, double max_seconds,
+         unsigned threads) {
         const MapGrid grid =
-            grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios);
+            grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), harmonics, std::move(loads), ratios);
         Columns columns(grid.point_count());
         {
           py::gil_scoped_release release;
@@ -64,23 +71,24 @@ void bind_map(py::module_& m) {
         }
         return columns.to_python();
       },
-      "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a, "threads"_a,
-      "Every point of the map on `threads` threads (0: one a core): the columns, by index.");
+      "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "harmonics"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
+      "threads"_a, "Every point of the map on `threads` threads (0: one a core): the columns, by index.");
   m.def(
       "_map_line_count",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
-         std::vector<double> loads, bool ratios, double, double) {
-        return grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios)
+         const Roughnesses& harmonics, std::vector<double> loads, bool ratios, double, double) {
+        return grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), harmonics, std::move(loads), ratios)
             .line_count();
       },
-      "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
+      "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "harmonics"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
       "The map's load lines, once its grid is checked.");
   m.def(
       "_solve_map_line",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
-         std::vector<double> loads, bool ratios, double tolerance, double max_seconds, std::size_t line) {
+         const Roughnesses& harmonics, std::vector<double> loads, bool ratios, double tolerance, double max_seconds,
+         std::size_t line) {
         const MapGrid grid =
-            grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), std::move(loads), ratios);
+            grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), harmonics, std::move(loads), ratios);
         if (line >= grid.line_count()) throw py::index_error("wavecontact.map: no line " + std::to_string(line));
         Columns columns(grid.loads.size());
         {
@@ -90,8 +98,8 @@ void bind_map(py::module_& m) {
         }
         return columns.to_python();
       },
-      "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a, "line"_a,
-      "One load line of the map: its columns.");
+      "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "harmonics"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
+      "line"_a, "One load line of the map: its columns.");
 }
 
 }  // namespace wavecontact::python

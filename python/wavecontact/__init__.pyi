@@ -271,11 +271,14 @@ class SingleZoneCheck:
 def single_zone_check(surface: Surface, a: float) -> SingleZoneCheck: ...
 
 class MapResult:
-    """The contacts of a map: arrays of shape (len(m), len(H2), len(n), len(loads))."""
+    """The contacts of a map: arrays of shape (len(m), len(H2), len(n), len(loads)), or
+    (len(m), len(harmonics), len(loads)) with harmonics."""
     columns: tuple[str, ...]
+    dims: tuple[str, ...]
     m: np.ndarray
-    H2: np.ndarray
-    n: np.ndarray
+    H2: np.ndarray | None
+    n: np.ndarray | None
+    harmonics: list[list[tuple[float, int]]] | None
     P: np.ndarray
     pa_over_pstar: np.ndarray
     status: np.ndarray
@@ -288,6 +291,6 @@ class MapResult:
     def __getitem__(self, column: str) -> np.ndarray: ...
 
 def map(H1: float, b1: float, E: float, *, m: float | Sequence[float] = ..., H2: float | Sequence[float] | None = ...,
-        n: int | Sequence[int] | None = ..., pa_over_pstar: float | Sequence[float] | None = ...,
-        P: float | Sequence[float] | None = ..., tolerance: float = ..., max_seconds: float = ..., threads: int = ...,
+        n: int | Sequence[int] | None = ..., harmonics: Sequence[Sequence[tuple[float, int]]] | None = ...,
+        pa_over_pstar: float | Sequence[float] | None = ..., P: float | Sequence[float] | None = ..., tolerance: float = ..., max_seconds: float = ..., threads: int = ...,
         client: object | None = ...) -> MapResult: ...

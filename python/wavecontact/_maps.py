@@ -1,6 +1,6 @@
 """Maps of shape and scale (docs/maps.md): the contact over a grid of the wave curve's shape m,
-a roughness harmonic's height H2 and wavelength ratio n, and the load, on this machine's
-cores or on a Dask cluster."""
+the roughness (a harmonic's height H2 and wavelength ratio n, or a list of whole roughnesses)
+and the load, on this machine's cores or on a Dask cluster."""
 import numpy as np
 
 from . import _wavecontact
@@ -11,20 +11,26 @@ _STATUS = np.array(["solved", "above_tolerance", "beyond_reach"])
 class MapResult:
     """The contacts of a map, as NumPy arrays over the grid.
 
-    Every column is an array of shape (len(m), len(H2), len(n), len(loads)) (H2 and n of
-    length 1, holding 0, without roughness): ``status`` ("solved", "above_tolerance",
-    "beyond_reach"), ``zones`` (per period), ``contact_fraction``, ``p0``, ``max_p``,
-    ``error_estimate`` (NaN beyond reach) and ``message`` (why, beyond reach). The axes are
-    ``m``, ``H2``, ``n`` and the load as ``P`` and ``pa_over_pstar``. ``result["p0"]`` is
-    ``result.p0``.
+    Every column is an array of shape ``dims``: (len(m), len(H2), len(n), len(loads)) (H2 and
+    n of length 1, holding 0, without roughness), or with ``harmonics`` (len(m),
+    len(harmonics), len(loads)) and H2 and n None. The columns: ``status`` ("solved",
+    "above_tolerance", "beyond_reach"), ``zones`` (per period), ``contact_fraction``, ``p0``,
+    ``max_p``, ``error_estimate`` (NaN beyond reach) and ``message`` (why, beyond reach). The
+    axes are ``m``, ``H2`` and ``n`` or ``harmonics`` (a list of lists of (H, n)), and the load
+    as ``P`` and ``pa_over_pstar``. ``result["p0"]`` is ``result.p0``.
     """
 
     columns = ("status", "zones", "contact_fraction", "p0", "max_p", "error_estimate", "message")
-    __slots__ = ("m", "H2", "n", "P", "pa_over_pstar") + columns
+    __slots__ = ("m", "H2", "n", "harmonics", "P", "pa_over_pstar", "dims") + columns
 
     def __init__(self, axes, columns):
-        self.m, self.H2, self.n, self.P, self.pa_over_pstar = axes
-        shape = (len(self.m), len(self.H2), len(self.n), len(self.P))
+        self.m, self.H2, self.n, self.harmonics, self.P, self.pa_over_pstar = axes
+        if self.harmonics is None:
+            self.dims = ("m", "H2", "n", "load")
+            shape = (len(self.m), len(self.H2), len(self.n), len(self.P))
+        else:
+            self.dims = ("m", "harmonics", "load")
+            shape = (len(self.m), len(self.harmonics), len(self.P))
         status, zones, fraction, p0, max_p, estimate, messages = columns
         self.status = _STATUS[np.asarray(status)].reshape(shape)
         self.zones = np.asarray(zones).reshape(shape)
@@ -42,7 +48,7 @@ class MapResult:
 
     def __repr__(self):
         solved = int((self.status == "solved").sum())
-        return f"MapResult({self.status.size} points, {solved} solved, axes m x H2 x n x load = {self.status.shape})"
+        return f"MapResult({self.status.size} points, {solved} solved, axes {' x '.join(self.dims)} = {self.status.shape})"
 
 
 def _axis(name, values, kind=float):
@@ -57,11 +63,21 @@ def _solve_line(grid, line):
     return _wavecontact._solve_map_line(**grid, line=line)
 
 
-def map(H1, b1, E, *, m=0.0, H2=None, n=None, pa_over_pstar=None, P=None, tolerance=1e-10, max_seconds=60.0,
-        threads=0, client=None):
-    """The contact at every point of the grid m x H2 x n x load, as a MapResult.
+def _roughnesses(harmonics):
+    try:
+        return [[(float(H), int(n)) for H, n in roughness] for roughness in harmonics]
+    except (TypeError, ValueError) as e:
+        raise ValueError(f"wavecontact.map: harmonics must be a list of lists of (H, n) pairs ({e})") from None
 
-    The loads (``pa_over_pstar`` or ``P``, ascending) of one (m, H2, n) are a load line,
+
+def map(H1, b1, E, *, m=0.0, H2=None, n=None, harmonics=None, pa_over_pstar=None, P=None, tolerance=1e-10,
+        max_seconds=60.0, threads=0, client=None):
+    """The contact at every point of the grid m x H2 x n x load (or m x harmonics x load), as a
+    MapResult.
+
+    ``harmonics``, instead of ``H2`` and ``n``, lists whole roughnesses, each a list of (H, n)
+    pairs: ``[[(0.15, 6), (0.01, 64)], [(0.0375, 32)]]``. The loads (``pa_over_pstar`` or
+    ``P``, ascending) of one (m, roughness) are a load line,
     solved by one continuation; without ``client`` the lines run on ``threads`` threads (0:
     one a core), with a ``dask.distributed.Client`` they are its tasks, one a line. Either way
     every point holds the same bits as ``solve_contact`` on its line's loads. ``H2`` and ``n``
@@ -70,6 +86,11 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, pa_over_pstar=None, P=None, tolera
     """
     if (H2 is None) != (n is None):
         raise ValueError("wavecontact.map: H2 and n go together (neither: the wave curve alone)")
+    if harmonics is not None and H2 is not None:
+        raise ValueError("wavecontact.map: give either H2 and n or harmonics")
+    roughnesses = _roughnesses(harmonics) if harmonics is not None else []
+    if harmonics is not None and not roughnesses:
+        raise ValueError("wavecontact.map: harmonics must hold at least one roughness")
     if (pa_over_pstar is None) == (P is None):
         raise ValueError("wavecontact.map: give exactly one of pa_over_pstar, P")
     shapes = _axis("m", m)
@@ -77,10 +98,15 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, pa_over_pstar=None, P=None, tolera
     ratios = _axis("n", n, np.int64) if n is not None else np.zeros(0, dtype=np.int64)
     loads = _axis("pa_over_pstar" if P is None else "P", pa_over_pstar if P is None else P)
     grid = dict(H1=float(H1), b1=float(b1), E=float(E), m=shapes.tolist(), H2=heights.tolist(), n=ratios.tolist(),
-                loads=loads.tolist(), ratios=P is None, tolerance=float(tolerance), max_seconds=float(max_seconds))
+                harmonics=roughnesses, loads=loads.tolist(), ratios=P is None, tolerance=float(tolerance),
+                max_seconds=float(max_seconds))
     pstar_load = np.pi * float(E) * float(H1)
-    axes = (shapes, heights if heights.size else np.zeros(1), ratios if ratios.size else np.zeros(1, dtype=np.int64),
-            loads * pstar_load if P is None else loads, loads if P is None else loads / pstar_load)
+    load_axes = (loads * pstar_load if P is None else loads, loads if P is None else loads / pstar_load)
+    if roughnesses:
+        axes = (shapes, None, None, roughnesses) + load_axes
+    else:
+        axes = (shapes, heights if heights.size else np.zeros(1),
+                ratios if ratios.size else np.zeros(1, dtype=np.int64), None) + load_axes
     if client is None:
         return MapResult(axes, _wavecontact._map_contacts(**grid, threads=int(threads)))
     # Checked here, before any task: the same ValueError as the local run.

@@ -57,5 +57,6 @@ Figure shape_design();                                            // fig9
 Figure contact_fraction_and_zones(const TwoScaleSweeps& sweeps);  // fig10
 Figure multi_zone_pressure();                                     // fig11
 Figure four_scale_contact();                                      // fig12
+Figure scale_map();  // fig13: the contact fraction over (n, pa/p*) at a fixed roughness slope
 
 }  // namespace wavecontact::cli

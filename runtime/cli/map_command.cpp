@@ -12,6 +12,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -57,15 +58,26 @@ std::string field(const std::string& text) {
   return quoted + "\"";
 }
 
-constexpr const char* columns =
-    "index,m,H2,n,P,pa_over_pstar,status,zones,contact_fraction,p0,max_p,error_estimate,message";
+// The roughness as "H:n+H:n..." (empty: none).
+std::string harmonics_text(const std::vector<Harmonic>& roughness) {
+  std::string text;
+  for (const Harmonic& h : roughness) text += (text.empty() ? "" : "+") + digits(h.H) + ":" + std::to_string(h.n);
+  return text;
+}
+
+// A whole number from the command line ("--n", "--harmonics").
+int whole(const std::string& name, double v) {
+  if (v != std::floor(v) || !(std::fabs(v) <= 1e6))
+    throw UsageError("--" + name + ": " + digits(v) + " is not a whole number");
+  return static_cast<int>(v);
+}
 
 std::string row(const MapPoint& p) {
   std::ostringstream os;
-  os << p.index << "," << digits(p.m) << "," << digits(p.H2) << "," << p.n << "," << digits(p.P) << ","
-     << digits(p.pa_over_pstar) << "," << to_string(p.status) << "," << p.zones << "," << digits(p.contact_fraction)
-     << "," << digits(p.p0) << "," << digits(p.max_p) << "," << digits(p.error_estimate) << "," << field(p.message)
-     << "\n";
+  os << p.index << "," << digits(p.m) << "," << digits(p.H2) << "," << p.n << "," << harmonics_text(p.harmonics) << ","
+     << digits(p.P) << "," << digits(p.pa_over_pstar) << "," << to_string(p.status) << "," << p.zones << ","
+     << digits(p.contact_fraction) << "," << digits(p.p0) << "," << digits(p.max_p) << "," << digits(p.error_estimate)
+     << "," << field(p.message) << "\n";
   return os.str();
 }
 
@@ -205,6 +217,8 @@ void MapArguments::add_to(CLI::App* app) {
   app->add_option("--m", m, "shapes: start:stop:count, start:stop:count:log or a comma list")->capture_default_str();
   app->add_option("--H2", H2, "roughness heights [length], as --m (with --n; none: the wave curve alone)");
   app->add_option("--n", n, "wavelength ratios n = b1/b2, even whole numbers, as --m (with --H2)");
+  app->add_option("--harmonics", harmonics,
+                  "or whole roughnesses, a comma list of H:n+H:n... (e.g. 0.15:6+0.01:64,0.0375:32)");
   auto* ratio = app->add_option("--pa-over-pstar", pa_over_pstar, "loads as pa/p*, ascending, as --m");
   auto* load = app->add_option("--P", P, "loads per unit length P [pressure x length], ascending, as --m");
   ratio->excludes(load);
@@ -214,21 +228,30 @@ void MapArguments::add_to(CLI::App* app) {
   app->add_option("--max-seconds", max_seconds, "work budget of each load [s]")->capture_default_str();
   app->add_option("--threads", threads, "load lines solved at once (0: one a core)")->capture_default_str();
   app->add_flag("--force", force, "allow more than " + std::to_string(most_map_points) + " points");
+  plot.add_to(app);
 }
 
 MapGrid MapArguments::grid() const {
   if (H2.empty() != n.empty()) throw UsageError("--H2 and --n go together (neither: the wave curve alone)");
+  if (!harmonics.empty() && !H2.empty()) throw UsageError("give either --H2 and --n or --harmonics");
   if (pa_over_pstar.empty() == P.empty()) throw UsageError("give exactly one of --pa-over-pstar, --P");
   MapGrid g;
   g.waviness = {H1, b1, 0.0, E};
   g.m = axis_values("m", m);
   if (!H2.empty()) {
     g.H2 = axis_values("H2", H2);
-    for (double v : axis_values("n", n)) {
-      if (v != std::floor(v) || !(std::fabs(v) <= 1e6))
-        throw UsageError("--n: " + digits(v) + " is not a whole number");
-      g.n.push_back(static_cast<int>(v));
+    for (double v : axis_values("n", n)) g.n.push_back(whole("n", v));
+  }
+  for (const std::string& roughness : split(harmonics, ',')) {
+    std::vector<Harmonic> set;
+    for (const std::string& harmonic : split(roughness, '+')) {
+      const std::vector<std::string> parts = split(harmonic, ':');
+      if (parts.size() != 2) {
+        throw UsageError("--harmonics: \"" + cli_common::shortened(harmonic) + "\" is not H:n");
+      }
+      set.push_back({number("harmonics", parts[0]), whole("harmonics", number("harmonics", parts[1]))});
     }
+    g.harmonics.push_back(std::move(set));
   }
   g.loads_are_ratios = !pa_over_pstar.empty();
   g.loads = axis_values(g.loads_are_ratios ? "pa-over-pstar" : "P", g.loads_are_ratios ? pa_over_pstar : P);
@@ -236,13 +259,32 @@ MapGrid MapArguments::grid() const {
   return g;
 }
 
+std::vector<MapAxis> MapArguments::axes(const MapGrid& g) const {
+  const auto logarithmic = [](const std::string& text) {
+    return text.size() > 4 && text.substr(text.size() - 4) == ":log";
+  };
+  std::vector<MapAxis> list{{"m", g.m, logarithmic(m)}};
+  if (!g.H2.empty()) {
+    list.push_back({"H2", g.H2, logarithmic(H2)});
+    list.push_back({"n", std::vector<double>(g.n.begin(), g.n.end()), logarithmic(n)});
+  }
+  if (!g.harmonics.empty()) {
+    std::vector<double> places;
+    for (std::size_t k = 0; k < g.harmonics.size(); ++k) places.push_back(static_cast<double>(k));
+    list.push_back({"harmonics", places, false});
+  }
+  const std::string& loads = g.loads_are_ratios ? pa_over_pstar : P;
+  list.push_back({g.loads_are_ratios ? "pa-over-pstar" : "P", g.loads, logarithmic(loads)});
+  return list;
+}
+
 std::vector<std::string> MapArguments::header() const {
-  return {
-      "# wavecontact map: one row a point, in any order; a rerun with these arguments completes it",
-      "# H1=" + all_digits(H1) + " b1=" + all_digits(b1) + " E=" + all_digits(E) +
-          " tolerance=" + all_digits(tolerance) + " max_seconds=" + all_digits(max_seconds),
-      "# m=" + m + " H2=" + H2 + " n=" + n + (pa_over_pstar.empty() ? " P=" + P : " pa_over_pstar=" + pa_over_pstar),
-      columns};
+  return {"# wavecontact map: one row a point, in any order; a rerun with these arguments completes it",
+          "# H1=" + all_digits(H1) + " b1=" + all_digits(b1) + " E=" + all_digits(E) +
+              " tolerance=" + all_digits(tolerance) + " max_seconds=" + all_digits(max_seconds),
+          "# m=" + m + " H2=" + H2 + " n=" + n + " harmonics=" + harmonics +
+              (pa_over_pstar.empty() ? " P=" + P : " pa_over_pstar=" + pa_over_pstar),
+          map_columns};
 }
 
 std::string run_map(const MapArguments& options, std::ostream& err) {
@@ -258,10 +300,12 @@ std::string run_map(const MapArguments& options, std::ostream& err) {
   if (!(options.max_seconds > 0 && options.max_seconds <= 1e6)) {
     throw UsageError("--max-seconds " + digits(options.max_seconds) + " is outside (0, 1e6]");
   }
-  MapFile file(options.out, options.header(), points);
-  const std::size_t already = file.done_count();
+  const std::vector<MapAxis> axes = options.axes(grid);
+  if (options.plot.wanted()) options.plot.check(axes);
+  std::optional<MapFile> file(std::in_place, options.out, options.header(), points);
+  const std::size_t already = file->done_count();
   Progress progress(err, points, already);
-  std::size_t beyond = 0, above = 0, unsolved_before = file.unsolved_count();
+  std::size_t beyond = 0, above = 0, unsolved_before = file->unsolved_count();
   MapOptions run;
   run.solver = SolverOptions(options.tolerance, 0, options.max_seconds);
   run.threads = options.threads;
@@ -269,7 +313,7 @@ std::string run_map(const MapArguments& options, std::ostream& err) {
       grid, run,
       [&](std::size_t line) {
         for (std::size_t k = 0; k < per_line; ++k) {
-          if (!file.done(line * per_line + k)) return false;
+          if (!file->done(line * per_line + k)) return false;
         }
         return true;
       },
@@ -277,16 +321,17 @@ std::string run_map(const MapArguments& options, std::ostream& err) {
         std::string rows;
         std::size_t added = 0;
         for (const MapPoint& p : line) {
-          if (file.done(p.index)) continue;
+          if (file->done(p.index)) continue;
           rows += row(p), ++added;
           beyond += p.status == MapStatus::beyond_reach, above += p.status == MapStatus::above_tolerance;
         }
-        file.append(rows);
+        file->append(rows);
         progress.advance(added);
       });
-  const std::string summary = "map: " + std::to_string(points) + " points in " + options.out + ": " +
-                              std::to_string(points - already) + " solved now, " + std::to_string(already) +
-                              " there before";
+  file.reset();  // closed before the plot reads it
+  std::string summary = "map: " + std::to_string(points) + " points in " + options.out + ": " +
+                        std::to_string(points - already) + " solved now, " + std::to_string(already) + " there before";
+  if (options.plot.wanted()) summary += "; drew " + draw_map_plot(options.plot, grid, axes, options.out);
   if (beyond + above + unsolved_before > 0) {
     throw NotWithinTolerance(summary + "; " + std::to_string(beyond) + " beyond reach and " + std::to_string(above) +
                              " above the tolerance now, " + std::to_string(unsolved_before) +

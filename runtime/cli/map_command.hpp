@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "map_plot.hpp"
 #include "wavecontact/map.hpp"
 
 namespace wavecontact::cli {
@@ -16,9 +17,14 @@ namespace wavecontact::cli {
 // "start:stop:count:log" (geometrically) or a comma list; `name` for the refusals.
 std::vector<double> axis_values(const std::string& name, const std::string& text);
 
+// The columns of a map file.
+inline constexpr const char* map_columns =
+    "index,m,H2,n,harmonics,P,pa_over_pstar,status,zones,contact_fraction,p0,max_p,error_estimate,message";
+
 struct MapArguments {
   double H1 = 0, b1 = 0, E = 0;
-  std::string m = "0", H2, n, pa_over_pstar, P, out;
+  std::string m = "0", H2, n, harmonics, pa_over_pstar, P, out;
+  MapPlotArguments plot;
   double tolerance = 1e-10, max_seconds = 60;
   unsigned threads = 0;
   bool force = false;
@@ -26,6 +32,8 @@ struct MapArguments {
   void add_to(CLI::App* app);
   // The grid the options describe (checked: axes, sizes, the library's domains).
   MapGrid grid() const;
+  // The grid's axes, in the order of its points' numbering (m, the roughness's, the load).
+  std::vector<MapAxis> axes(const MapGrid& grid) const;
   // The lines the header of `out` names, in the order of its columns.
   std::vector<std::string> header() const;
 };

@@ -1,10 +1,5 @@
 #include "reproduce.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -16,65 +11,16 @@
 #include <vector>
 
 #include "figure.hpp"
+#include "gnuplot.hpp"
 #include "refusals.hpp"
-
-extern char** environ;
 
 namespace wavecontact::cli {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-void write(const fs::path& path, const std::string& contents) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << contents;
-  out.close();
-  if (!out) throw OutputError("cannot write " + path.string() + ": " + std::strerror(errno));
-}
-
-// Runs gnuplot on `script` (a file name in `dir`) with `dir` as its working directory: an
-// argument vector, no shell, so any path works. Throws OutputError if it cannot run or fails.
-void run_gnuplot(const fs::path& dir, const std::string& script) {
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addchdir_np(&actions, dir.c_str());
-  std::string program = "gnuplot", argument = script;
-  char* argv[] = {program.data(), argument.data(), nullptr};
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) {
-    throw OutputError("cannot run gnuplot: " + std::string(std::strerror(spawned)) +
-                      (spawned == ENOENT ? " (scripts/install-deps.sh installs it)" : ""));
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) throw OutputError("cannot wait for gnuplot: " + std::string(std::strerror(errno)));
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    throw OutputError("gnuplot failed on " + (dir / script).string() +
-                      (WIFEXITED(status) ? " (exit status " + std::to_string(WEXITSTATUS(status)) + ")" : " (killed)"));
-  }
-}
-
-// A whole PNG: its signature first and its IEND chunk last (a full disk truncates it).
-void require_png(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string signature = "\x89PNG\r\n\x1a\n";
-  const std::string end("\0\0\0\0IEND\xae\x42\x60\x82", 12);
-  if (bytes.size() < signature.size() + end.size() || bytes.compare(0, signature.size(), signature) != 0 ||
-      bytes.compare(bytes.size() - end.size(), end.size(), end) != 0) {
-    throw OutputError(path.string() + " is not a whole PNG after gnuplot (a full disk?)");
-  }
-}
-
-}  // namespace
-
 void reproduce(const std::string& out_dir, const std::vector<std::string>& only, std::ostream& log) {
-  const std::vector<std::string> names{"fig1", "fig2", "fig4", "fig5a", "fig5b", "fig6",
-                                       "fig7", "fig8", "fig9", "fig10", "fig11", "fig12"};
+  const std::vector<std::string> names{"fig1", "fig2", "fig4",  "fig5a", "fig5b", "fig6", "fig7",
+                                       "fig8", "fig9", "fig10", "fig11", "fig12", "fig13"};
   for (const std::string& name : only) {
     if (std::find(names.begin(), names.end(), name) == names.end()) {
       std::string list;
@@ -113,21 +59,17 @@ void reproduce(const std::string& out_dir, const std::vector<std::string>& only,
   compute("fig10", [sweeps] { return contact_fraction_and_zones(sweeps.get()); });
   compute("fig11", multi_zone_pressure);
   compute("fig12", four_scale_contact);
+  compute("fig13", scale_map);
   std::vector<Figure> figures;
   for (std::future<Figure>& f : pending) figures.push_back(f.get());
   for (const Figure& figure : figures) {
-    write(dir / (figure.name + ".csv"), figure.csv);
-    write(dir / (figure.name + ".gp"), "set terminal pngcairo size 1100,650 font 'DejaVu Sans,10'\nset output '" +
-                                           figure.name +
-                                           ".png'\nset datafile separator ','\n"
-                                           "set grid\n" +
-                                           figure.script);
-    run_gnuplot(dir, figure.name + ".gp");
-    require_png(dir / (figure.name + ".png"));
+    write_file(dir / (figure.name + ".csv"), figure.csv);
+    write_file(dir / (figure.name + ".gp"), gnuplot_preamble(figure.name + ".png") + figure.script);
+    run_gnuplot(dir, figure.name + ".gp", figure.name + ".png");
     log << "wrote " << (dir / (figure.name + ".png")).string() << "\n";
   }
   if (!only.empty()) return;  // the report reads every figure
-  write(dir / "REPORT.md", discrepancy_report(figures, sweeps.get()));
+  write_file(dir / "REPORT.md", discrepancy_report(figures, sweeps.get()));
   log << "wrote " << (dir / "REPORT.md").string() << "\n";
 }
 

@@ -1,11 +1,6 @@
 """wavecontact.map: every point is solve_contact's on its load line, bit for bit, on this
-machine's threads and on a Dask LocalCluster of two worker processes, one of them killed
-mid-run; bad grids are refused before any work."""
-import os
-import signal
-import threading
-import time
-
+machine's threads (test_map_dask.py: on a Dask cluster); bad grids are refused before any
+work."""
 import numpy as np
 import pytest
 
@@ -56,6 +51,19 @@ def test_the_wave_curve_alone():
     assert [x.contact_fraction for x in c] == list(r.contact_fraction[1, 0, 0])
 
 
+def test_a_list_of_roughnesses():
+    sets = [[(0.15, 6), (0.01, 64)], [(0.0375, 32)]]
+    r = wc.map(1.0, 10.0, 1.0, m=[0.0, 10.0], harmonics=sets, pa_over_pstar=[0.3, 1.0])
+    assert r.dims == ("m", "harmonics", "load") and r.status.shape == (2, 2, 2)
+    assert r.H2 is None and r.n is None and r.harmonics == sets
+    for i, m in enumerate([0.0, 10.0]):
+        for j, roughness in enumerate(sets):
+            surface = wc.Surface(wc.WavinessParams(1.0, 10.0, m, 1.0), [wc.Harmonic(H, n) for H, n in roughness])
+            contacts = wc.solve_contact(surface, np.array([0.3, 1.0]) * np.pi)
+            assert [c.contact_fraction for c in contacts] == list(r.contact_fraction[i, j]), (m, roughness)
+            assert [c.zones_per_period for c in contacts] == list(r.zones[i, j]), (m, roughness)
+
+
 @pytest.mark.parametrize(
     "change, message",
     [
@@ -65,6 +73,11 @@ def test_the_wave_curve_alone():
         (dict(H2=None), "H2 and n go together"),
         (dict(P=[1.0]), "exactly one of pa_over_pstar, P"),
         (dict(m=[-1.0]), "m = -1"),
+        (dict(H2=None, n=None, harmonics=[[(0.1, 0)]]), "n = 0"),
+        (dict(H2=None, n=None, harmonics=[[]]), "at least one harmonic"),
+        (dict(H2=None, n=None, harmonics=[]), "at least one roughness"),
+        (dict(H2=None, n=None, harmonics=[[0.1]]), "pairs"),
+        (dict(harmonics=[[(0.1, 8)]]), "either H2 and n or harmonics"),
     ],
 )
 def test_bad_grids_are_refused(change, message):
@@ -72,45 +85,3 @@ def test_bad_grids_are_refused(change, message):
         wc.map(**dict(GRID, **change))
 
 
-@pytest.fixture(scope="module")
-def cluster():
-    import distributed  # Debian's python3-distributed (scripts/install-deps.sh)
-
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as c:
-        with distributed.Client(c) as client:
-            yield client
-
-
-def test_dask_gives_the_same_bits(cluster):
-    assert_same_result(wc.map(**GRID, client=cluster), wc.map(**GRID))
-
-
-def test_dask_refuses_before_any_task(cluster):
-    with pytest.raises(ValueError, match="ascending"):
-        wc.map(**dict(GRID, pa_over_pstar=[0.5, 0.1]), client=cluster)
-
-
-def test_a_killed_worker_loses_nothing(cluster):
-    """One worker process killed (SIGKILL) while its tasks run: the scheduler runs them again
-    elsewhere; every point once, the same bits."""
-    grid = dict(GRID, m=list(np.linspace(0.0, 10.0, 8)), n=[16, 32], pa_over_pstar=[0.05, 0.3, 1.0, 1.8])
-    expected = wc.map(**grid)
-    pids = list(cluster.run(os.getpid).values())
-    killed = []
-
-    def kill_one():
-        # Once tasks are running on the workers.
-        deadline = time.time() + 30
-        while time.time() < deadline and not any(cluster.processing().values()):
-            time.sleep(0.01)
-        time.sleep(0.2)
-        os.kill(pids[0], signal.SIGKILL)
-        killed.append(time.time())
-
-    killer = threading.Thread(target=kill_one)
-    killer.start()
-    result = wc.map(**grid, client=cluster)
-    finished = time.time()
-    killer.join()
-    assert killed and killed[0] < finished, "the map ended before a worker was killed"
-    assert_same_result(result, expected)

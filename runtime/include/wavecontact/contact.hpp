@@ -39,6 +39,10 @@ struct Harmonic {
   int n;
 };
 
+// Checks a roughness (the count, each H and n), naming `function`, the parameter and the
+// value; throws std::domain_error.
+void validate(const std::vector<Harmonic>& roughness, const char* function);
+
 // The surface y(x), even and of period 2 b1, pressed against a half-plane of reduced
 // modulus E*.
 class Surface {

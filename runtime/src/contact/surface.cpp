@@ -23,14 +23,11 @@ double resolution(int n) { return pi / std::max(4, n); }
 
 }  // namespace
 
-Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness) : b1_(w.b1), E_(w.E) {
-  constexpr const char* function = "wavecontact::Surface";
-  validate(w, function);
+void validate(const std::vector<Harmonic>& roughness, const char* function) {
   if (roughness.size() > max_harmonics) {
     detail::domain_error(function, "harmonics", static_cast<double>(roughness.size()),
                          "at most " + std::to_string(max_harmonics) + " harmonics");
   }
-  int highest = 0;
   for (const Harmonic& h : roughness) {
     if (h.H != 0 && !(std::fabs(h.H) >= min_scale && std::fabs(h.H) <= max_scale)) {
       detail::domain_error(function, "H", h.H,
@@ -39,8 +36,15 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
     if (h.n < 1 || h.n > max_roughness_n) {
       detail::domain_error(function, "n", h.n, "1 <= n <= " + std::to_string(max_roughness_n));
     }
-    highest = std::max(highest, h.n);
   }
+}
+
+Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness) : b1_(w.b1), E_(w.E) {
+  constexpr const char* function = "wavecontact::Surface";
+  validate(w, function);
+  validate(roughness, function);
+  int highest = 0;
+  for (const Harmonic& h : roughness) highest = std::max(highest, h.n);
   height_scale_ = w.H1;
   for (const Harmonic& h : roughness) height_scale_ += std::fabs(h.H);
   auto s = std::make_shared<detail::SurfaceModel>();

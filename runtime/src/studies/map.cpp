@@ -25,7 +25,12 @@ std::size_t at_least_one(std::size_t count) { return std::max<std::size_t>(count
 MapPoint point_of(const MapGrid& grid, std::size_t line, std::size_t load) {
   MapPoint p;
   p.index = line * grid.loads.size() + load;
-  p.m = grid.line_m(line), p.H2 = grid.line_H2(line), p.n = grid.line_n(line);
+  p.m = grid.line_m(line);
+  p.harmonics = grid.line_roughness(line);
+  p.H2 = p.harmonics.size() == 1 ? p.harmonics.front().H
+         : p.harmonics.empty()   ? 0.0
+                                 : std::numeric_limits<double>::quiet_NaN();
+  p.n = p.harmonics.size() == 1 ? p.harmonics.front().n : 0;
   const double pstar_load = pi * grid.waviness.E * grid.waviness.H1;  // P at pa/p* = 1
   p.P = grid.loads_are_ratios ? grid.loads[load] * pstar_load : grid.loads[load];
   p.pa_over_pstar = grid.loads_are_ratios ? grid.loads[load] : grid.loads[load] / pstar_load;
@@ -51,19 +56,20 @@ void record_beyond_reach(MapPoint& p, const std::string& why) {
 
 }  // namespace
 
-std::size_t MapGrid::line_count() const {
-  return at_least_one(m.size()) * at_least_one(H2.size()) * at_least_one(n.size());
+std::size_t MapGrid::roughness_count() const {
+  return harmonics.empty() ? at_least_one(H2.size()) * at_least_one(n.size()) : harmonics.size();
 }
 
-double MapGrid::line_m(std::size_t line) const {
-  return m.empty() ? waviness.m : m[line / (at_least_one(H2.size()) * at_least_one(n.size()))];
-}
+std::size_t MapGrid::line_count() const { return at_least_one(m.size()) * roughness_count(); }
 
-double MapGrid::line_H2(std::size_t line) const {
-  return H2.empty() ? 0.0 : H2[line / at_least_one(n.size()) % H2.size()];
-}
+double MapGrid::line_m(std::size_t line) const { return m.empty() ? waviness.m : m[line / roughness_count()]; }
 
-int MapGrid::line_n(std::size_t line) const { return n.empty() ? 0 : n[line % n.size()]; }
+std::vector<Harmonic> MapGrid::line_roughness(std::size_t line) const {
+  const std::size_t r = line % roughness_count();
+  if (!harmonics.empty()) return harmonics[r];
+  if (H2.empty()) return {};
+  return {{H2[r / n.size()], n[r % n.size()]}};
+}
 
 const char* to_string(MapStatus status) {
   switch (status) {
@@ -91,6 +97,14 @@ void validate(const MapGrid& grid, const char* function) {
   for (double H2 : grid.H2) {
     for (int n : grid.n) validate(RoughnessParams{H2, n}, function);
   }
+  if (!grid.harmonics.empty() && !grid.H2.empty()) {
+    detail::domain_error(function, "harmonics.size()", static_cast<double>(grid.harmonics.size()),
+                         "0 with H2 and n (the roughnesses are either H2 x n or the list harmonics)");
+  }
+  for (const std::vector<Harmonic>& roughness : grid.harmonics) {
+    if (roughness.empty()) detail::domain_error(function, "harmonics[i].size()", 0, "at least one harmonic");
+    validate(roughness, function);
+  }
   if (grid.loads.empty()) detail::domain_error(function, "loads.size()", 0, "at least one load");
   for (std::size_t i = 0; i < grid.loads.size(); ++i) {
     detail::require_positive(function, "load", grid.loads[i]);
@@ -106,7 +120,7 @@ std::vector<MapPoint> solve_map_line(const MapGrid& grid, std::size_t line, cons
   for (std::size_t k = 0; k < grid.loads.size(); ++k) points.push_back(point_of(grid, line, k));
   WavinessParams w = grid.waviness;
   w.m = grid.line_m(line);
-  const Surface surface = grid.H2.empty() ? Surface(w) : Surface(w, {{grid.line_H2(line), grid.line_n(line)}});
+  const Surface surface(w, grid.line_roughness(line));
   std::vector<double> loads;
   for (const MapPoint& p : points) loads.push_back(p.P);
   try {
