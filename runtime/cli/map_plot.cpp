@@ -36,10 +36,6 @@ std::size_t position_of(const std::vector<std::string>& names, const std::string
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
-const MapAxis& axis_named(const std::vector<MapAxis>& axes, const std::string& name) {
-  return *std::find_if(axes.begin(), axes.end(), [&](const MapAxis& a) { return a.name == name; });
-}
-
 // The point's position on each axis, in the order of `axes` (m, the roughness's axes, the load).
 std::vector<std::size_t> positions(const MapGrid& grid, const std::vector<MapAxis>& axes, std::size_t index) {
   const std::size_t line = index / grid.loads.size(), r = line % grid.roughness_count();
@@ -103,12 +99,12 @@ void MapPlotArguments::check(const std::vector<MapAxis>& axes) const {
 
 std::string draw_map_plot(const MapPlotArguments& plot, const MapGrid& grid, const std::vector<MapAxis>& axes,
                           const std::string& out) {
-  const MapAxis &x = axis_named(axes, plot.x), &y = axis_named(axes, plot.y);
-  std::size_t x_at = 0, y_at = 0;
+  std::size_t x_at = 0, y_at = 0;  // check() found both
   for (std::size_t k = 0; k < axes.size(); ++k) {
     if (axes[k].name == plot.x) x_at = k;
     if (axes[k].name == plot.y) y_at = k;
   }
+  const MapAxis &x = axes[x_at], &y = axes[y_at];
   HeatMap map{{label(x), x.values, x.log},
               {label(y), y.values, y.log},
               std::vector<double>(x.values.size() * y.values.size(), std::numeric_limits<double>::quiet_NaN())};
