@@ -1,0 +1,118 @@
+#!/usr/bin/python3
+"""A map of 10^4 points against the loops a user writes without one (docs/maps.md): the same
+points, the same tolerance (1e-10) and budget, timed on this machine in one run.
+
+- `wavecontact map`: one continuation a load line, the lines on every core;
+- a shell loop of `wavecontact solve`, one process a point (bash, serial, as users write it);
+- a serial Python loop of wavecontact.solve_contact, one call a point.
+
+Every loop's contact fraction is checked against the map's (the continuation and a solve from
+scratch agree to the tolerance, not to the bit). Prints a table; with --docs, rewrites the
+`maps-bench:map-vs-loops` tables of the given .md files.
+
+    PYTHONPATH=build/python /usr/bin/python3 bench/map_vs_loops.py [--docs README.md --docs docs/maps.md]
+"""
+import argparse
+import csv
+import datetime
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+
+import wavecontact as wc
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scripts"))
+import doc_tables  # noqa: E402
+
+H1, B1, E = 1.0, 10.0, 1.0
+M = np.linspace(0.0, 2.0, 25)
+H2 = 0.02
+N = [8, 16, 24, 32]
+RATIOS = np.linspace(0.01, 1.0, 100)
+TOLERANCE = 1e-10
+
+
+def points():
+    """(m, n, pa/p*) of every point, in the map's order of index."""
+    return [(m, n, r) for m in M for n in N for r in RATIOS]
+
+
+def digits(x):
+    return repr(float(x))
+
+
+def run_map(cli, folder):
+    out = os.path.join(folder, "map.csv")
+    command = [cli, "map", "--H1", "1", "--b1", "10", "--E", "1", "--m", ",".join(digits(m) for m in M), "--H2",
+               digits(H2), "--n", ",".join(map(str, N)), "--pa-over-pstar", ",".join(digits(r) for r in RATIOS),
+               "--tolerance", digits(TOLERANCE), "--out", out]
+    start = time.perf_counter()
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    seconds = time.perf_counter() - start
+    fraction = {}
+    with open(out) as f:
+        rows = csv.DictReader(line for line in f if not line.startswith("#"))
+        for row in rows:
+            assert row["status"] == "solved", row
+            fraction[int(row["index"])] = float(row["contact_fraction"])
+    return seconds, [fraction[i] for i in range(len(fraction))]
+
+
+def run_shell_loop(cli, folder):
+    script = os.path.join(folder, "loop.sh")
+    with open(script, "w") as f:
+        f.write("set -e\n")
+        for m, n, r in points():
+            f.write(f"'{cli}' solve --H1 1 --b1 10 --E 1 --m {digits(m)} --H2 {digits(H2)} --n {n} "
+                    f"--pa-over-pstar {digits(r)} --tolerance {digits(TOLERANCE)} | tail -n 1\n")
+    start = time.perf_counter()
+    out = subprocess.run(["bash", script], check=True, capture_output=True, text=True).stdout
+    seconds = time.perf_counter() - start
+    header = "P,pa,pa_over_pstar,zones,contact_fraction".split(",")
+    return seconds, [float(line.split(",")[header.index("contact_fraction")]) for line in out.splitlines()]
+
+
+def run_python_loop():
+    fractions = []
+    start = time.perf_counter()
+    for m, n, r in points():
+        surface = wc.Surface(wc.WavinessParams(H1, B1, m, E), [wc.Harmonic(H2, n)])
+        fractions.append(wc.solve_contact(surface, r * np.pi * E * H1, tolerance=TOLERANCE).contact_fraction)
+    return time.perf_counter() - start, fractions
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--cli", default="build/runtime/wavecontact")
+    parser.add_argument("--docs", action="append", help="rewrite the table of this .md file (repeatable)")
+    args = parser.parse_args()
+    cli = os.path.abspath(args.cli)
+    with tempfile.TemporaryDirectory() as folder:
+        map_seconds, reference = run_map(cli, folder)
+        shell_seconds, shell = run_shell_loop(cli, folder)
+    python_seconds, python = run_python_loop()
+    for name, values in (("shell loop", shell), ("Python loop", python)):
+        worst = max(abs(a - b) for a, b in zip(values, reference))
+        assert len(values) == len(reference) and worst < 1e-8, (name, worst)
+    count = len(reference)
+    rows = [("`wavecontact map`, every core", map_seconds), ("shell loop of `wavecontact solve`", shell_seconds),
+            ("Python loop of `wavecontact.solve_contact`", python_seconds)]
+    lines = [f"{count} points: m 0 to 2 (25), H2 = {H2} mm at n = {', '.join(map(str, N))}, pa/p* 0.01 to 1 (100); "
+             f"tolerance {TOLERANCE:g}", "", "| run | wall time | per point | the map's speed-up |", "|---|---|---|---|"]
+    for name, seconds in rows:
+        lines.append(f"| {name} | {seconds:.1f} s | {seconds / count * 1e3:.2f} ms | {seconds / map_seconds:.1f}× |")
+    print("\n".join(lines))
+    if args.docs:
+        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+        run = (f"Run of {datetime.datetime.now().isoformat(timespec='seconds')} on {platform.node()} "
+               f"({os.cpu_count()} CPUs), commit {commit or 'not recorded'}, `bench/map_vs_loops.py`")
+        doc_tables.rewrite(args.docs, "maps-bench", {"map-vs-loops": lambda: lines}, run)
+
+
+if __name__ == "__main__":
+    main()
