@@ -190,8 +190,10 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
     c = r.configuration;
     if (r.outcome == ZoneSystem::Outcome::failed) {
       // Zones that came too near for their nodes, or a zone across a kink too coarse for its
-      // density, may keep Newton from converging.
-      if (!fit_nodes(c, surface, true) && !grow_nodes(c, surface, 1e-6, kinked)) {
+      // density, may keep Newton from converging; and a zone across a kink may need finer
+      // nodes than its tail shows (its window's edges), up to most_working_nodes.
+      if (!fit_nodes(c, surface, true) && !grow_nodes(c, surface, 1e-6, kinked) &&
+          !grow_nodes(c, surface, 0.0, kinked)) {
         char text[120];
         std::snprintf(text, sizeof text, "Newton's method did not converge on %zu zones (residual %.3g)",
                       c.zones.size(), r.residual);
