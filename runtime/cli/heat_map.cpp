@@ -1,18 +1,15 @@
 #include "heat_map.hpp"
 
 #include <cmath>
-#include <cstdio>
+
+#include "figure.hpp"
 
 namespace wavecontact::cli {
 
 namespace {
 
-std::string text(double value) {
-  if (std::isnan(value)) return "NaN";
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
+// gnuplot's undefined value where there is none.
+std::string text(double value) { return std::isnan(value) ? "NaN" : number(value); }
 
 // The axis's range (at least two values), title and scale, with tics at its values where
 // they are few (or, on a log scale, at about ten of them).

@@ -23,15 +23,6 @@ namespace wavecontact::cli {
 
 namespace {
 
-std::vector<std::string> split(const std::string& text, char separator) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(text);
-  while (std::getline(in, part, separator)) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.emplace_back();
-  return parts;
-}
-
 double number(const std::string& name, const std::string& text) {
   const std::string wrong = cli_common::decimal_real_error(text);
   if (!wrong.empty()) throw UsageError("--" + name + ": \"" + cli_common::shortened(text) + "\" is not " + wrong);
@@ -180,6 +171,15 @@ class Progress {
 };
 
 }  // namespace
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  std::istringstream in(text);
+  while (std::getline(in, part, separator)) parts.push_back(part);
+  if (!text.empty() && text.back() == separator) parts.emplace_back();
+  return parts;
+}
 
 std::vector<double> axis_values(const std::string& name, const std::string& text) {
   if (text.find(':') == std::string::npos) {

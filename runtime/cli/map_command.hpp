@@ -13,6 +13,9 @@
 
 namespace wavecontact::cli {
 
+// The parts of `text` between separators (a trailing separator ends with an empty part).
+std::vector<std::string> split(const std::string& text, char separator);
+
 // The values of an axis: "start:stop:count" (evenly spaced, both ends included),
 // "start:stop:count:log" (geometrically) or a comma list; `name` for the refusals.
 std::vector<double> axis_values(const std::string& name, const std::string& text);

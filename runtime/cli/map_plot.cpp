@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
-#include <sstream>
 
+#include "figure.hpp"
 #include "gnuplot.hpp"
 #include "heat_map.hpp"
 #include "map_command.hpp"
@@ -23,14 +21,6 @@ namespace {
 
 // The columns a heat map can show: the numbers of a solved point.
 const std::vector<std::string> plotted_columns{"zones", "contact_fraction", "p0", "max_p", "error_estimate"};
-
-std::vector<std::string> fields(const std::string& line) {
-  std::vector<std::string> parts;
-  std::istringstream in(line);
-  std::string part;
-  while (std::getline(in, part, ',')) parts.push_back(part);
-  return parts;
-}
 
 std::size_t position_of(const std::vector<std::string>& names, const std::string& name) {
   return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
@@ -76,8 +66,9 @@ void MapPlotArguments::add_to(CLI::App* app) {
 
 void MapPlotArguments::check(const std::vector<MapAxis>& axes) const {
   if (std::find(plotted_columns.begin(), plotted_columns.end(), column) == plotted_columns.end()) {
-    throw UsageError("--plot: no column \"" + column +
-                     "\" to draw (one of: zones, contact_fraction, p0, max_p, error_estimate)");
+    std::string list;
+    for (const std::string& c : plotted_columns) list += (list.empty() ? "" : ", ") + c;
+    throw UsageError("--plot: no column \"" + column + "\" to draw (one of: " + list + ")");
   }
   if (x == y) throw UsageError("--x and --y are both " + x + ": a heat map needs two axes");
   std::string names;
@@ -109,12 +100,12 @@ std::string draw_map_plot(const MapPlotArguments& plot, const MapGrid& grid, con
               {label(y), y.values, y.log},
               std::vector<double>(x.values.size() * y.values.size(), std::numeric_limits<double>::quiet_NaN())};
   std::ifstream in(out, std::ios::binary);
-  const std::vector<std::string> names = fields(map_columns);
+  const std::vector<std::string> names = split(map_columns, ',');
   const std::size_t column = position_of(names, plot.column), status = position_of(names, "status");
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#' || line.rfind("index,", 0) == 0) continue;
-    const std::vector<std::string> row = fields(line);
+    const std::vector<std::string> row = split(line, ',');
     if (row.size() <= column || row[status] != "solved") continue;
     const std::vector<std::size_t> at = positions(grid, axes, std::strtoull(row[0].c_str(), nullptr, 10));
     map.z[at[x_at] * y.values.size() + at[y_at]] = std::strtod(row[column].c_str(), nullptr);
@@ -126,9 +117,7 @@ std::string draw_map_plot(const MapPlotArguments& plot, const MapGrid& grid, con
   std::string fixed;
   for (const MapAxis& a : axes) {
     if (a.name != plot.x && a.name != plot.y) {
-      char value[40];
-      std::snprintf(value, sizeof value, "%g", a.values.front());
-      fixed += (fixed.empty() ? ", " : "; ") + a.name + " = " + value;
+      fixed += (fixed.empty() ? ", " : "; ") + a.name + " = " + number(a.values.front());
     }
   }
   write_file(dir / (base + ".csv"), "# " + plot.x + "," + plot.y + "," + plot.column + "\n" + heat_map_table(map));
