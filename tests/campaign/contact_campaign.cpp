@@ -104,11 +104,17 @@ int main(int argc, char** argv) {
   double slowest = 0, total = 0;
   for (int k = s.first; k < s.first + s.sweeps; ++k) {
     const Sweep w = draw(s, k);
-    std::string surface = "m " + std::to_string(w.m);
+    // Every digit, so that a sweep reruns exactly through the CLI (--m, --H2, --n).
+    const auto digits = [](double v) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.17g", v);
+      return std::string(text);
+    };
+    std::string surface = "m " + digits(w.m);
     double range = 2 * H1;
     int highest = 1;
     for (const wavecontact::Harmonic& h : w.harmonics) {
-      surface += " " + std::to_string(h.H) + ":" + std::to_string(h.n), range += 2 * h.H;
+      surface += " " + digits(h.H) + ":" + std::to_string(h.n), range += 2 * h.H;
       highest = std::max(highest, h.n);
     }
     const auto start = std::chrono::steady_clock::now();
