@@ -302,7 +302,10 @@ BOOST_AUTO_TEST_CASE(convergence_is_geometric) {
     for (std::size_t i = 1; i < errors.size(); ++i) {
       BOOST_TEST(errors[i] < std::max(errors[i - 1] / 10, floor), k.name << ", " << 4 * i + 8 << " nodes");
     }
-    BOOST_TEST(reference.error_estimate() < 1e-11, k.name);
+    // At a tolerance of 1e-12 the estimate is the refinement's floor: each solve meets its rows
+    // to 1e-13, and a coefficient errs by up to its index times that (8e-12 to 1.6e-11 at 35
+    // zones, as the path to it changes).
+    BOOST_TEST(reference.error_estimate() < 3e-11, k.name);
     BOOST_TEST(errors.back() < 1e-11, k.name);
   }
 }
