@@ -28,11 +28,10 @@ struct SinCosPi {
   double (*cos)(double);
 };
 const SinCosPi& sleef() {
-  static const SinCosPi functions =
-      array_kernel_isa() == Isa::scalar
-          ? SinCosPi{[](double q) -> double { return Sleef_sinpi_u05(q); },
-                     [](double q) -> double { return Sleef_cospi_u05(q); }}
-          : SinCosPi{Sleef_sinpid1_u05purecfma, Sleef_cospid1_u05purecfma};
+  static const SinCosPi functions = array_kernel_isa() == Isa::scalar
+                                        ? SinCosPi{[](double q) -> double { return Sleef_sinpi_u05(q); },
+                                                   [](double q) -> double { return Sleef_cospi_u05(q); }}
+                                        : SinCosPi{Sleef_sinpid1_u05purecfma, Sleef_cospid1_u05purecfma};
   return functions;
 }
 double sin_pi(double q) { return sleef().sin(q); }
