@@ -1,7 +1,8 @@
 // The contact with many zones (50 to 1024 a period) against the boundary-element oracle
 // (bem_oracle.hpp) on grids fine enough for the shortest wavelength: a four-scale
 // Weierstrass-type series to n = 256, the wave curve at m = 10 with roughness (the valley's
-// asperities in contact), a single harmonic at n = 256 and at n = 1024. The zone counts
+// asperities in contact), a single harmonic at n = 256 and at n = 1024, and the four contacts
+// the many-zone issue found refused or penetrating (20 to 39 zones a period). The zone counts
 // agree, every zone end lies within the spacing of the oracle's coarsest grid, and p(0), the
 // contact fraction and the largest pressure within its error estimates. (The grids are those
 // whose estimates are consistent with the next finer grid's: on 16384 points the four-scale
@@ -12,6 +13,7 @@
 #include <boost/math/constants/constants.hpp>
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -101,6 +103,30 @@ BOOST_AUTO_TEST_CASE(single_harmonic_n_256) {
 
 BOOST_AUTO_TEST_CASE(single_harmonic_n_1024) {
   check_against_oracle({"H2 = 0.05, n = 1024, pa/p* = 4", 0, {{0.05, 1024}}, 4 * pi, 32768, 1000}, 1e-8);
+}
+
+// The contacts the many-zone issue found beyond reach (refused, exit 2) or penetrating (19
+// zones at exit 0 with a gap of -0.080 at the valley, x = b1): each against the oracle; the
+// first two also against the boundary-element solutions the issue quotes (2^15 to 2^17 points
+// a period), and the penetrating one by its own gap on 16 points a shortest wavelength over
+// the half period, the valley included.
+BOOST_AUTO_TEST_CASE(the_cases_the_issue_found_out_of_reach) {
+  const Case penetrating{"m = 10, H2 = 0.03, n = 64, pa/p* = 1", 10, {{0.03, 64}}, pi, 16384, 26};
+  const Contact valley = check_against_oracle(penetrating, 1e-8);
+  BOOST_TEST(valley.zones_per_period() == 26);
+  BOOST_TEST(std::fabs(valley.contact_fraction() - 0.4406) < 1e-3, "contact fraction " << valley.contact_fraction());
+  double lowest = 0;
+  for (int i = 0; i <= 16 * 64; ++i) lowest = std::min(lowest, valley.gap(b1 * i / (16 * 64)));
+  BOOST_TEST(lowest >= -1e-9 * 2 * (1 + 0.03), "lowest gap " << lowest);
+  BOOST_TEST(valley.pressure(b1) > 0);  // the valley's asperity in contact
+
+  const Case refused{"H2 = 0.15, n = 64, pa/p* = 0.5", 0, {{0.15, 64}}, 0.5 * pi, 8192, 35};
+  const Contact c = check_against_oracle(refused, 1e-8);
+  BOOST_TEST(c.zones_per_period() == 35);
+  BOOST_TEST(std::fabs(c.contact_fraction() - 0.1051) < 1e-3, "contact fraction " << c.contact_fraction());
+  BOOST_TEST(c.pressure(0) == 1.14628, boost::test_tools::tolerance(1e-5));
+  check_against_oracle({"H2 = 0.15, n = 128, pa/p* = 0.1", 0, {{0.15, 128}}, 0.1 * pi, 8192, 20}, 1e-8);
+  check_against_oracle({"H2 = 0.15, n = 256, pa/p* = 0.05", 0, {{0.15, 256}}, 0.05 * pi, 16384, 20}, 1e-8);
 }
 
 BOOST_AUTO_TEST_CASE(threads_change_no_bit) {
