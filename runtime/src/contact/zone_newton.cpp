@@ -39,6 +39,18 @@ std::vector<double> plus(std::vector<double> x, double lambda, const std::vector
 // a thousand): Newton's method stops at the first iteration that does not halve it.
 constexpr double rounding_reached = 1e-10;
 
+// The steps of the forward differences that form the Jacobian's products, relative to the
+// product vector's largest entry. A difference errs by its step times the residual's
+// curvature and by the residual's rounding (1e-12 to 1e-11) over the step. Where two zones
+// nearly touch, the gap's width barely moves the residual and rounding dominates: at 1e-7
+// Newton's steps went astray at a residual of 1e-8 until the work budget ran out (campaign
+// sweep 1957), and 1e-6, near the root of the rounding, mends it. Where a kink's correction
+// window curves the residual the step's own error dominates instead: the wave curve m = 10
+// near full contact stalled at 2e-8 with 1e-6 and converged with 1e-7. Newton starts with
+// the coarse step and changes to the other whenever a step fails to lower the residual.
+constexpr double coarse_difference_step = 1e-6;
+constexpr double fine_difference_step = 1e-7;
+
 // The row of the largest residual, by zone, on stderr.
 void trace_iteration(int iteration, double residual, const std::vector<double>& F, const SystemLayout& L) {
   const std::size_t row = static_cast<std::size_t>(
@@ -80,20 +92,13 @@ Damping damping(const Configuration& now, const Configuration& full) {
 
 }  // namespace
 
-std::vector<double> ZoneSystem::linear_solve(const Linearisation& at, const std::vector<double>& rhs,
-                                             double tolerance) const {
+std::vector<double> ZoneSystem::linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance,
+                                             double difference_step) const {
   const ZonePreconditioner preconditioner(surface_, at.c, at.layout, at.external_slope, P_);
   const auto jacobian_times = [&](const std::vector<double>& v) {
     const double size = largest(v);
     if (size == 0) return std::vector<double>(v.size(), 0.0);
-    // A forward difference errs by its step (the residual's curvature) and by the residual's
-    // rounding over the step. On a smooth profile rounding dominates: where two zones nearly
-    // touched, the gap's width barely moved the residual, and at a step of 1e-7 Newton's
-    // steps went astray at a residual of 1e-8 until the work budget ran out (campaign sweep
-    // 1957); a step of 1e-6, near the root of the rounding, mends it. A kink's correction
-    // window curves the residual, and there the step's own error dominates: the wave curve
-    // m = 10 near full contact took 22 s at 1e-6 instead of 2 s at 1e-7.
-    const double h = (surface_.kinks.empty() ? 1e-6 : 1e-7) / size;
+    const double h = difference_step / size;
     std::vector<double> F = residual(unpack(plus(at.X, h, v), at.layout), at.layout, nullptr);
     for (std::size_t i = 0; i < F.size(); ++i) F[i] = (F[i] - at.F[i]) / h;
     return F;
@@ -127,8 +132,9 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   double best = std::numeric_limits<double>::infinity();  // the last residual that halved the one before
   Configuration lowest;                                   // the iterate of the lowest residual so far
   double lowest_residual = std::numeric_limits<double>::infinity();
-  int stalled = 0;           // iterations without halving the best residual
-  bool coarse_steps = true;  // linear solves no finer than the tolerance needs (newton_step)
+  int stalled = 0;                                  // iterations without halving the best residual
+  bool coarse_steps = true;                         // linear solves no finer than the tolerance needs (newton_step)
+  double difference_step = coarse_difference_step;  // of the Jacobian's products (linear_solve)
   for (int iteration = 0; iteration < 40; ++iteration) {
     result.iterations = iteration;
     result.residual = largest(at.F);
@@ -146,7 +152,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       result.residual = lowest_residual;
       return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
-    const std::vector<double> step = newton_step(at, result.residual, coarse_steps ? tolerance : 0.0);
+    const std::vector<double> step = newton_step(at, result.residual, coarse_steps ? tolerance : 0.0, difference_step);
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
@@ -167,6 +173,11 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     // A step that had to be cut far may be one the coarse linear solve spoiled: from then on
     // the linear solves go to the forcing term alone.
     if (next.step < 0x1p-3) coarse_steps = false;
+    // A step along which the residual did not fall at all came from products that erred more
+    // than the step itself: the other difference step from then on (see the constants).
+    if (!next.descended) {
+      difference_step = difference_step == coarse_difference_step ? fine_difference_step : coarse_difference_step;
+    }
     if (tracing()) {
       std::fprintf(stderr, "wavecontact trace:     step %.3g of Newton's (stretch %zu limits to %.3g)\n", next.step,
                    damped.limiting, damped.lambda);
@@ -177,14 +188,15 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   return finish(Outcome::failed);
 }
 
-std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double residual, double tolerance) const {
+std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double residual, double tolerance,
+                                            double difference_step) const {
   // The linear solve's tolerance falls like the root of the residual: superlinear
   // convergence without over-solving the first, far steps (Eisenstat and Walker); nor the
   // last: a tenth of what takes the residual below Newton's tolerance is enough.
   std::vector<double> minus_F(at.F.size());
   for (std::size_t i = 0; i < at.F.size(); ++i) minus_F[i] = -at.F[i];
   const double forcing = std::min(1e-2, std::max({1e-6, 0.1 * std::sqrt(residual), 0.1 * tolerance / residual}));
-  return linear_solve(at, minus_F, forcing);
+  return linear_solve(at, minus_F, forcing, difference_step);
 }
 
 ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const std::vector<double>& step, double lambda,
@@ -200,7 +212,8 @@ ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const s
     next.c = unpack(next.X, at.layout);
     next.F = residual(next.c, at.layout, &next.external_slope);
     next.step = lambda;
-    if (squares(next.F) < (1 - 1e-4 * lambda) * merit || at_rounding || halving == 8) return next;
+    next.descended = squares(next.F) < (1 - 1e-4 * lambda) * merit;
+    if (next.descended || at_rounding || halving == 8) return next;
   }
 }
 
@@ -210,7 +223,7 @@ Configuration ZoneSystem::perturbed(const Configuration& c, const std::vector<do
   for (std::size_t k = 0; k < at.layout.zones.size(); ++k) {
     rhs[at.layout.zones[k].at] = shift[k] / at.layout.zones[k].row_scale;  // the zone's T_0 row
   }
-  return unpack(plus(at.X, 1, linear_solve(at, rhs, 1e-3)), at.layout);
+  return unpack(plus(at.X, 1, linear_solve(at, rhs, 1e-3, coarse_difference_step)), at.layout);
 }
 
 }  // namespace wavecontact::detail

@@ -132,19 +132,23 @@ class ZoneSystem {
     SystemLayout layout;
     std::vector<double> X, F;
     std::vector<std::vector<double>> external_slope;
-    double step = 1;  // the fraction of Newton's step that reached it
+    double step = 1;        // the fraction of Newton's step that reached it
+    bool descended = true;  // whether the residual's 2-norm fell on the way
   };
   Linearisation linearise(Configuration c, bool ends_fixed) const;
   // Newton's step s = -J^-1 F at `at`, whose largest scaled residual is `residual`, by
   // linear_solve to a tolerance that falls with the residual, no finer than Newton's
   // `tolerance` needs (0: as fine as the forcing term asks).
-  std::vector<double> newton_step(const Linearisation& at, double residual, double tolerance) const;
+  std::vector<double> newton_step(const Linearisation& at, double residual, double tolerance,
+                                  double difference_step) const;
   // The point lambda s from `at` along Newton's step s, lambda halved up to 8 times while the
   // residual's 2-norm does not fall (not at all at the rounding floor).
   Linearisation backtrack(const Linearisation& at, const std::vector<double>& step, double lambda,
                           bool at_rounding) const;
-  // J s = rhs at `at`, to the relative tolerance, by preconditioned GMRES.
-  std::vector<double> linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance) const;
+  // J s = rhs at `at`, to the relative tolerance, by preconditioned GMRES; J's products are
+  // forward differences whose step is difference_step of the product vector's largest entry.
+  std::vector<double> linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance,
+                                   double difference_step) const;
 
   SystemLayout layout(const Configuration& c, bool ends_fixed) const;  // fixed for one Newton solve
   std::vector<double> pack(const Configuration& c, const SystemLayout& L) const;
