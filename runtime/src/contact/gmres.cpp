@@ -25,6 +25,7 @@ std::vector<double> gmres(const LinearMap& A, const LinearMap& M_inverse, const 
     const double beta = std::sqrt(dot(r, r));
     if (beta <= tolerance * b_norm) break;
     const int m = restart;
+    bool converged = false;  // the rotated residual |g_k|, which equals |b - A x|, met the tolerance
     std::vector<std::vector<double>> V(static_cast<std::size_t>(m + 1)), Z(static_cast<std::size_t>(m));
     std::vector<std::vector<double>> H(static_cast<std::size_t>(m + 1),
                                        std::vector<double>(static_cast<std::size_t>(m), 0.0));
@@ -59,6 +60,7 @@ std::vector<double> gmres(const LinearMap& A, const LinearMap& M_inverse, const 
       H[uk][uk] = rho, H[uk + 1][uk] = 0;
       g[uk + 1] = -sn[uk] * g[uk], g[uk] = cs[uk] * g[uk];
       if (std::fabs(g[uk + 1]) <= tolerance * b_norm || H[uk][uk] == 0) {
+        converged = std::fabs(g[uk + 1]) <= tolerance * b_norm;
         ++k;
         break;
       }
@@ -74,6 +76,9 @@ std::vector<double> gmres(const LinearMap& A, const LinearMap& M_inverse, const 
     for (int i = 0; i < k; ++i) {
       for (std::size_t j = 0; j < n; ++j) x[j] += y[static_cast<std::size_t>(i)] * Z[static_cast<std::size_t>(i)][j];
     }
+    // The residual itself only for a restart: its product would be one more of the 2 to 10 a
+    // Newton step takes.
+    if (converged || cycle + 1 == restarts) break;
     const std::vector<double> Ax = A(x);
     for (std::size_t j = 0; j < n; ++j) r[j] = b[j] - Ax[j];
   }
