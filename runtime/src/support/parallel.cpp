@@ -6,11 +6,11 @@
 #include <exception>
 #include <mutex>
 #include <string>
-#include <system_error>
 #include <thread>
 #include <vector>
 
 #include "support/validate.hpp"
+#include "support/worker_pool.hpp"
 #include "wavecontact/threads.hpp"
 
 namespace wavecontact {
@@ -84,16 +84,7 @@ bool for_each_chunk(std::size_t count, std::size_t block, std::size_t min_points
     }
     for (std::size_t begin; (begin = next_body.fetch_add(chunk)) < count;) body(begin, std::min(count, begin + chunk));
   };
-  std::vector<std::thread> workers;
-  for (std::size_t t = 1; t < threads; ++t) {
-    try {
-      workers.emplace_back(work);
-    } catch (const std::system_error&) {
-      break;  // no thread to be had: the others take its chunks
-    }
-  }
-  work();
-  for (std::thread& worker : workers) worker.join();
+  if (!run_on_worker_pool(threads - 1, work)) work();
   return held.load();
 }
 
