@@ -10,6 +10,7 @@
 #include "active_set.hpp"
 #include "constants.hpp"
 #include "trace.hpp"
+#include "support/parallel.hpp"
 #include "verification.hpp"
 #include "wavecontact/errors.hpp"
 #include "zone_field.hpp"
@@ -24,8 +25,8 @@ namespace {
 // a hundredth of the zone from a free end (there the pressure goes like the root of the
 // distance to the end, whose own difference is the first term).
 std::vector<double> zone_differences(const ContactSolution& a, const ContactSolution& b, double highest) {
-  std::vector<double> difference;
-  for (std::size_t k = 0; k < a.zone_count(); ++k) {
+  std::vector<double> difference(a.zone_count());
+  for_each_index(a.zone_count(), zones_for_threads, [&](std::size_t k) {
     const ZoneGeometry& g = a.zone(k);
     double worst = std::max(std::fabs(g.a - b.zone(k).a), std::fabs(g.b - b.zone(k).b)) / pi;
     const double margin = 0.01 * (g.b - g.a);
@@ -35,8 +36,8 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
       const double x = (lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count);
       worst = std::max(worst, std::fabs(a.pressure(x) - b.pressure(x)) / highest);
     }
-    difference.push_back(worst);
-  }
+    difference[k] = worst;
+  });
   return difference;
 }
 
@@ -48,8 +49,8 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
                          const Configuration& c, double highest) {
   std::vector<double> magnitude;
   for (const ZoneUnknowns& z : c.zones) magnitude.push_back(own_potential(z));
-  std::vector<double> shift;
-  for (std::size_t k = 0; k < c.zones.size(); ++k) {
+  std::vector<double> shift(c.zones.size());
+  for_each_index(c.zones.size(), zones_for_threads, [&](std::size_t k) {
     const ZoneGeometry& g = c.zones[k].geometry;
     const double s = std::cos((g.a + g.b) / 2);
     double terms = std::fabs(c.C) + surface->E / 2 * std::fabs(surface->depth((g.a + g.b) / 2));
@@ -58,8 +59,8 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
       const ZoneGeometry& gl = c.zones[l].geometry;
       terms += magnitude[l] * (std::fabs(std::log(std::max(std::fabs(s - gl.m), gl.h))) + 1);
     }
-    shift.push_back((k % 2 == 0 ? 1 : -1) * std::numeric_limits<double>::epsilon() * terms);
-  }
+    shift[k] = (k % 2 == 0 ? 1 : -1) * std::numeric_limits<double>::epsilon() * terms;
+  });
   const std::vector<double> moved =
       zone_differences(ContactSolution(surface, c), ContactSolution(surface, system.perturbed(c, shift)), highest);
   return moved.empty() ? 0.0 : *std::max_element(moved.begin(), moved.end());

@@ -8,6 +8,7 @@
 
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "support/parallel.hpp"
 
 namespace wavecontact::detail {
 
@@ -47,26 +48,90 @@ void sample_pressure(const ContactSolution& s, std::size_t k, std::vector<double
 }  // namespace
 
 double highest_sampled_pressure(const ContactSolution& s) {
-  double highest = 0;
-  std::vector<double> xs, ps;
-  for (std::size_t k = 0; k < s.zone_count(); ++k) {
+  std::vector<double> highest(s.zone_count(), 0.0);
+  for_each_index(s.zone_count(), zones_for_threads, [&](std::size_t k) {
+    std::vector<double> xs, ps;
     sample_pressure(s, k, xs, ps);
-    for (double p : ps) highest = std::max(highest, p);
-  }
-  return highest;
+    for (double p : ps) highest[k] = std::max(highest[k], p);
+  });
+  return highest.empty() ? 0.0 : *std::max_element(highest.begin(), highest.end());
 }
 
-Verification verify(const ContactSolution& s, double gap_tolerance, double pressure_tolerance) {
-  Verification v;
-  const SurfaceModel& surface = s.surface();
+namespace {
+
+// One zone's pressure: its highest sample (the first, if equal) and its local minima.
+struct ZoneCheck {
+  double highest = 0, x_of_highest = 0;
+  std::vector<std::pair<double, double>> minima;
+};
+
+ZoneCheck check_zone(const ContactSolution& s, std::size_t k) {
+  ZoneCheck check;
   std::vector<double> xs, ps;
-  for (std::size_t k = 0; k < s.zone_count(); ++k) {
-    sample_pressure(s, k, xs, ps);
-    for (std::size_t i = 0; i < ps.size(); ++i) {
-      if (ps[i] > v.highest_pressure) v.highest_pressure = ps[i], v.x_of_highest_pressure = xs[i];
+  sample_pressure(s, k, xs, ps);
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    if (ps[i] > check.highest) check.highest = ps[i], check.x_of_highest = xs[i];
+  }
+  check.minima = local_minima(xs, ps, [&](double x) { return s.pressure(x); });
+  return check;
+}
+
+// One stretch [lo, hi] between zones: the gap's local minima and those that penetrate.
+struct GapCheck {
+  std::vector<std::pair<double, double>> minima;
+  std::vector<Penetration> penetrations;
+};
+
+GapCheck check_gap(const ContactSolution& s, double lo, double hi, double gap_tolerance) {
+  GapCheck check;
+  if (!(hi > lo)) return check;
+  const SurfaceModel& surface = s.surface();
+  const double spacing = surface.resolution / 8;
+  const int count = std::max(8, static_cast<int>(std::ceil((hi - lo) / spacing)));
+  std::vector<double> xs, gaps;
+  for (int i = 0; i <= count; ++i) {
+    // Chebyshev-like near the zone ends (the gap grows like a 3/2 power there), even inside.
+    const double t = static_cast<double>(i) / count;
+    const double x = lo + (hi - lo) * (0.5 - 0.5 * std::cos(pi * t)) * 0.25 + (hi - lo) * t * 0.75;
+    xs.push_back(std::clamp(x, lo, hi));
+    gaps.push_back(s.gap(xs.back()));
+  }
+  check.minima = local_minima(xs, gaps, [&](double x) { return s.gap(x); });
+  for (const auto& [x, value] : check.minima) {
+    // The gap grows like the 3/2 power of the distance from a zone's end: a shallow dip
+    // right next to one is the truncation of that zone's series, not a new contact.
+    const double from_end = std::min(lo > 0 ? x - lo : pi, hi < pi ? hi - x : pi);
+    const bool beside_an_end = from_end < 1e-3 * (hi - lo) && value > -1e-6 * surface.height_range;
+    if (value < -gap_tolerance && !beside_an_end) {
+      const double h = std::min({1e-3 * surface.resolution, (x - lo) / 2, (hi - x) / 2});
+      const double curvature = h > 0 ? (s.gap(x + h) - 2 * value + s.gap(x - h)) / (h * h) : 0;
+      check.penetrations.push_back({x, value, curvature, lo, hi});
     }
-    const auto p = [&](double x) { return s.pressure(x); };
-    for (const auto& [x, value] : local_minima(xs, ps, p)) {
+  }
+  return check;
+}
+
+}  // namespace
+
+Verification verify(const ContactSolution& s, double gap_tolerance, double pressure_tolerance) {
+  // The zones, and the stretches between them (and to the top and the valley), each checked
+  // on its own by the threads, and the results taken in order.
+  const std::size_t zones = s.zone_count();
+  std::vector<ZoneCheck> zone_checks(zones);
+  std::vector<GapCheck> gap_checks(zones + 1);
+  for_each_index(2 * zones + 1, zones_for_threads, [&](std::size_t i) {
+    if (i < zones) {
+      zone_checks[i] = check_zone(s, i);
+    } else {
+      const std::size_t k = i - zones;  // the stretch before zone k
+      gap_checks[k] = check_gap(s, k == 0 ? 0.0 : s.zone(k - 1).b, k == zones ? pi : s.zone(k).a, gap_tolerance);
+    }
+  });
+  Verification v;
+  for (std::size_t k = 0; k < zones; ++k) {
+    const ZoneCheck& z = zone_checks[k];
+    if (z.highest > v.highest_pressure) v.highest_pressure = z.highest, v.x_of_highest_pressure = z.x_of_highest;
+    for (const auto& [x, value] : z.minima) {
       if (value < v.lowest_pressure) v.lowest_pressure = value, v.x_of_lowest_pressure = x;
       if (value < 0) v.tensions.push_back({k, x, value});
     }
@@ -76,39 +141,11 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
       std::remove_if(v.tensions.begin(), v.tensions.end(), [&](const Tension& t) { return !(t.pressure < allowed); }),
       v.tensions.end());
   v.pressure_ok = v.tensions.empty();
-  // The gap on each stretch between zones (and to the top and the valley).
-  std::vector<std::pair<double, double>> regions;
-  double previous = 0;
-  for (std::size_t k = 0; k < s.zone_count(); ++k) {
-    regions.emplace_back(previous, s.zone(k).a);
-    previous = s.zone(k).b;
-  }
-  regions.emplace_back(previous, pi);
-  const double spacing = surface.resolution / 8;
-  for (const auto& [lo, hi] : regions) {
-    if (!(hi > lo)) continue;
-    const int count = std::max(8, static_cast<int>(std::ceil((hi - lo) / spacing)));
-    std::vector<double> xs, gaps;
-    for (int i = 0; i <= count; ++i) {
-      // Chebyshev-like near the zone ends (the gap grows like a 3/2 power there), even inside.
-      const double t = static_cast<double>(i) / count;
-      const double x = lo + (hi - lo) * (0.5 - 0.5 * std::cos(pi * t)) * 0.25 + (hi - lo) * t * 0.75;
-      xs.push_back(std::clamp(x, lo, hi));
-      gaps.push_back(s.gap(xs.back()));
-    }
-    const auto gap = [&](double x) { return s.gap(x); };
-    for (const auto& [x, value] : local_minima(xs, gaps, gap)) {
+  for (const GapCheck& g : gap_checks) {
+    for (const auto& [x, value] : g.minima) {
       if (value < v.lowest_gap) v.lowest_gap = value, v.x_of_lowest_gap = x;
-      // The gap grows like the 3/2 power of the distance from a zone's end: a shallow dip
-      // right next to one is the truncation of that zone's series, not a new contact.
-      const double from_end = std::min(lo > 0 ? x - lo : pi, hi < pi ? hi - x : pi);
-      const bool beside_an_end = from_end < 1e-3 * (hi - lo) && value > -1e-6 * surface.height_range;
-      if (value < -gap_tolerance && !beside_an_end) {
-        const double h = std::min({1e-3 * surface.resolution, (x - lo) / 2, (hi - x) / 2});
-        const double curvature = h > 0 ? (s.gap(x + h) - 2 * value + s.gap(x - h)) / (h * h) : 0;
-        v.penetrations.push_back({x, value, curvature, lo, hi});
-      }
     }
+    v.penetrations.insert(v.penetrations.end(), g.penetrations.begin(), g.penetrations.end());
   }
   return v;
 }
