@@ -11,6 +11,7 @@
 #include <boost/math/constants/constants.hpp>
 
 #include "support/validate.hpp"
+#include "support/worker_pool.hpp"
 #include "wavecontact/errors.hpp"
 #include "wavecontact/two_scale.hpp"
 
@@ -150,6 +151,8 @@ void map_contacts(const MapGrid& grid, const MapOptions& options, const std::fun
   std::mutex done_mutex;
   std::exception_ptr failure;
   const auto work = [&] {
+    // The lines keep the cores busy: each solve's own parallel calls on its thread alone.
+    const detail::WorkerPoolBypass alone(threads > 1);
     for (;;) {
       const std::size_t line = next++;
       if (line >= lines || stop) return;

@@ -13,7 +13,7 @@ namespace wavecontact::detail {
 
 namespace {
 
-thread_local bool working = false;  // this thread runs a pool's work (a caller's or a helper's)
+thread_local bool working = false;  // this thread runs a pool's work, or bypasses the pool
 
 // Runs work on this thread, marked as pool work.
 void run_marked(const std::function<void()>& work) {
@@ -96,5 +96,9 @@ WorkerPool& pool() {
 }  // namespace
 
 bool run_on_worker_pool(std::size_t helpers, const std::function<void()>& work) { return pool().run(helpers, work); }
+
+WorkerPoolBypass::WorkerPoolBypass(bool active) : before_(working) { working = working || active; }
+
+WorkerPoolBypass::~WorkerPoolBypass() { working = before_; }
 
 }  // namespace wavecontact::detail

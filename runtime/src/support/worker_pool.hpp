@@ -16,4 +16,18 @@ namespace wavecontact::detail {
 // and the caller does the work alone. work must not throw.
 bool run_on_worker_pool(std::size_t helpers, const std::function<void()>& work);
 
+// While one lives (and `active`), run_on_worker_pool called on its thread runs nothing: for
+// threads that already keep every core busy between them, such as a map's, where a helper
+// would only take a core from another of them and make its caller wait.
+class WorkerPoolBypass {
+ public:
+  explicit WorkerPoolBypass(bool active);
+  ~WorkerPoolBypass();
+  WorkerPoolBypass(const WorkerPoolBypass&) = delete;
+  WorkerPoolBypass& operator=(const WorkerPoolBypass&) = delete;
+
+ private:
+  bool before_;
+};
+
 }  // namespace wavecontact::detail
