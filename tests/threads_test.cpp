@@ -3,11 +3,17 @@
 #define BOOST_TEST_MODULE threads
 #include <boost/test/unit_test.hpp>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "isa_under_test.hpp"
 #include "wavecontact/contact.hpp"
@@ -63,6 +69,71 @@ BOOST_AUTO_TEST_CASE(contact_pressure) {
   same_bits_whatever_the_threads(
       [&](const Eigen::ArrayXd& x, Eigen::ArrayXd& p) { c.pressure(x, p); },
       Eigen::ArrayXd::LinSpaced(50 * static_cast<Eigen::Index>(parallel_points_costly) + 3, -10, 10), "contact");
+}
+
+// Callers on several threads at once: one takes the thread pool, the others compute alone on
+// their own threads (runtime/src/support/worker_pool.*); each gets the bits of a caller alone.
+BOOST_AUTO_TEST_CASE(concurrent_callers_get_the_bits_of_one_alone) {
+  const WavinessParams w{1.0, 10.0, 2.0, 1.0};
+  set_array_kernel_threads(2);
+  Eigen::ArrayXd alone(points.size());
+  pressure(w, 4.0, points, alone);
+  std::vector<Eigen::ArrayXd> results(4, Eigen::ArrayXd::Constant(points.size(), std::nan("")));
+  std::vector<bool> same(results.size(), true);
+  std::vector<std::thread> callers;
+  for (std::size_t t = 0; t < results.size(); ++t) {
+    callers.emplace_back([&, t] {
+      for (int round = 0; round < 20; ++round) {
+        pressure(w, 4.0, points, results[t]);
+        same[t] = same[t] && std::memcmp(alone.data(), results[t].data(), sizeof(double) * static_cast<std::size_t>(results[t].size())) == 0;
+      }
+    });
+  }
+  for (std::thread& caller : callers) caller.join();
+  for (std::size_t t = 0; t < results.size(); ++t) BOOST_TEST(same[t], "caller " << t << " differs from one alone");
+  set_array_kernel_threads(0);
+}
+
+// A contact whose zone loops run on the pool (79 zones a period), solved on three threads at
+// once: each the contact solved alone, bit for bit.
+BOOST_AUTO_TEST_CASE(concurrent_contact_solves_get_the_contact_solved_alone) {
+  const Surface surface(WavinessParams{1.0, 10.0, 0.0, 1.0}, {{0.15, 256}});
+  const Contact alone = solve_contact(surface, 0.2 * M_PI);
+  BOOST_TEST_REQUIRE(alone.zones_per_period() > 64);
+  std::vector<std::optional<Contact>> contacts(3);
+  std::vector<std::thread> callers;
+  for (std::optional<Contact>& c : contacts) callers.emplace_back([&] { c = solve_contact(surface, 0.2 * M_PI); });
+  for (std::thread& caller : callers) caller.join();
+  for (const std::optional<Contact>& c : contacts) {
+    BOOST_TEST_REQUIRE(c->zones().size() == alone.zones().size());
+    for (std::size_t k = 0; k < alone.zones().size(); ++k) {
+      BOOST_TEST(c->zones()[k].x_start == alone.zones()[k].x_start);
+      BOOST_TEST(c->zones()[k].x_end == alone.zones()[k].x_end);
+    }
+    BOOST_TEST(c->pressure(0.0) == alone.pressure(0.0));
+  }
+}
+
+// A child of fork() (as Python's multiprocessing makes) has none of its parent's pool
+// threads: its parallel calls finish all the same (they must not wait for a helper that does
+// not exist), with the parent's bits.
+BOOST_AUTO_TEST_CASE(a_forked_child_computes_with_the_parents_bits) {
+  const WavinessParams w{1.0, 10.0, 2.0, 1.0};
+  set_array_kernel_threads(2);
+  Eigen::ArrayXd parent(points.size());
+  pressure(w, 4.0, points, parent);  // the parent's pool exists
+  const pid_t child = fork();
+  BOOST_TEST_REQUIRE(child >= 0);
+  if (child == 0) {
+    Eigen::ArrayXd p(points.size());
+    pressure(w, 4.0, points, p);
+    _exit(std::memcmp(parent.data(), p.data(), sizeof(double) * static_cast<std::size_t>(p.size())) == 0 ? 0 : 1);
+  }
+  int status = 0;
+  BOOST_TEST_REQUIRE(waitpid(child, &status, 0) == child);
+  BOOST_TEST(WIFEXITED(status));
+  BOOST_TEST(WEXITSTATUS(status) == 0, "the child's pressure differs from the parent's");
+  set_array_kernel_threads(0);
 }
 
 // A point that is not finite, in the first, a middle or the last chunk of a split array: the
