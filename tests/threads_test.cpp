@@ -85,7 +85,8 @@ BOOST_AUTO_TEST_CASE(concurrent_callers_get_the_bits_of_one_alone) {
     callers.emplace_back([&, t] {
       for (int round = 0; round < 20; ++round) {
         pressure(w, 4.0, points, results[t]);
-        same[t] = same[t] && std::memcmp(alone.data(), results[t].data(), sizeof(double) * static_cast<std::size_t>(results[t].size())) == 0;
+        same[t] = same[t] && std::memcmp(alone.data(), results[t].data(),
+                                         sizeof(double) * static_cast<std::size_t>(results[t].size())) == 0;
       }
     });
   }
