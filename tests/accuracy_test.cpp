@@ -24,6 +24,7 @@
 #include "wavecontact/stability.hpp"
 #include "wavecontact/two_scale.hpp"
 #include "wavecontact/waviness.hpp"
+#include "wavecontact/waviness_zone.hpp"
 
 using wavecontact::test::error_in_eps;
 using wavecontact::test::evaluate;
@@ -193,13 +194,15 @@ BOOST_AUTO_TEST_CASE(load_beyond_half_within_64_eps) {
 // change sign (it is then not the contact, see LoadCurve), so the error is taken relative to the
 // largest |p| of the zone's points. The array form is measured too, with those points among
 // 4000 spread over the zone, so that it tabulates the Cauchy part's atoms (CauchyAtomTable) over
-// most of them.
+// most of them, and so is a WavinessZone's point, which reads them from the panels it builds.
 BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
   wavecontact::test::Precision precision(wavecontact::test::reference_digits);
   const auto& beyond = waviness().beyond_half;
   ErrorReport top{"pressure, a > b1/2, |x| < b1/2"}, flank{"pressure, a > b1/2, |x| > b1/2"};
   ErrorReport array_top{"pressure (array), a > b1/2, |x| < b1/2"},
       array_flank{"pressure (array), a > b1/2, |x| > b1/2"};
+  ErrorReport zone_top{"pressure (WavinessZone), a > b1/2, |x| < b1/2"},
+      zone_flank{"pressure (WavinessZone), a > b1/2, |x| > b1/2"};
   const std::vector<std::array<double, 3>> scales{{1, 1, 1}, {2.5e9, 1e-3, 10}, {7, 0.3, 3.7}};
   std::size_t k = 0;
   for (double m : {0.0, 1e-3, 0.2, 0.5, 0.99, 1.0, 1.01, 2.0, 10.0, 35.0, 100.0, 1e3, 1e4}) {
@@ -243,6 +246,7 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
       for (std::size_t i = 0; i < references.size(); ++i)
         spread[4000 + static_cast<Eigen::Index>(i)] = references[i].first.x;
       const Eigen::ArrayXd array = wavecontact::pressure(params, a, spread);
+      const wavecontact::WavinessZone zone(params, a);
       for (std::size_t i = 0; i < references.size(); ++i) {
         const auto& p = references[i].first;
         const auto& reference = references[i].second;  // a structured binding cannot be captured (C++17)
@@ -251,6 +255,7 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
         };
         (p.x < 0.5 * b1 ? top : flank).add(error(wavecontact::pressure(params, a, p.x)), p);
         (p.x < 0.5 * b1 ? array_top : array_flank).add(error(array[4000 + static_cast<Eigen::Index>(i)]), p);
+        (p.x < 0.5 * b1 ? zone_top : zone_flank).add(error(zone.pressure(p.x)), p);
       }
     }
   }
@@ -258,6 +263,8 @@ BOOST_AUTO_TEST_CASE(pressure_beyond_half_within_64_eps) {
   check(flank);
   check(array_top);
   check(array_flank);
+  check(zone_top);
+  check(zone_flank);
 }
 
 // Full contact of eq. 2 (the built-in profile parametric_wave_curve, built with abs()) in closed

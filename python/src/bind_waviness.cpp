@@ -79,7 +79,11 @@ void bind_waviness(py::module_& m) {
   py::class_<WavinessZone>(m, "WavinessZone",
                            "One zone of half-width a, prepared once: pressure(x) then costs only the point's "
                            "own terms (what depends on params and a alone, beyond b1/2 the closed forms' atoms, "
-                           "is computed by the constructor). The values are pressure()'s, bit for bit.")
+                           "is computed by the constructor). Up to a = b1/2 the values are pressure()'s, bit for bit. "
+                           "Beyond, the zone tabulates the atoms a point needs near the other branch's pole, a "
+                           "panel the first time a point falls into it: a point then costs about 0.1 us, and the "
+                           "values, the same from a point or an array, differ from pressure()'s by the atoms' "
+                           "rounding (a few eps of the largest p).")
       .def(py::init<const WavinessParams&, double, Form>(), "params"_a, "a"_a, "form"_a = Form::exact,
            "The zone |x| <= a, 0 < a < b1; ValueError if a or params is invalid.")
       .def(

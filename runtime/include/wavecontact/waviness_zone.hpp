@@ -1,8 +1,16 @@
 // One contact zone |x| <= a of the wave curve (seed eq. 2), prepared once for many
 // evaluations: what depends on (params, a) alone (the zone's angles, and beyond b1/2 the atoms
 // of the closed forms on both sides of the kink) is computed by the constructor, so that a
-// point costs only its own angles and terms. Its values are those of the free functions of
-// waviness.hpp, bit for bit (they build the same evaluations per call).
+// point costs only its own angles and terms.
+// - Up to b1/2 its values are those of the free functions of waviness.hpp, bit for bit (they
+//   build the same evaluation per call).
+// - Beyond b1/2, near the other branch's pole, a point needs atoms of its own (the Cauchy
+//   part's, series of hundreds of terms). The zone tabulates them in log(1 + y), a panel of 16
+//   nodes the first time a point falls into it (some tens of microseconds, once), and reads
+//   them from the panel afterwards. Its values are then a function of x alone, the same from a
+//   point or an array and from any thread; they differ from the free functions' (which build
+//   no table for one point, and per call for an array) by the rounding of the atoms
+//   (tests/waviness_zone_test.cpp, and tests/accuracy_test.cpp against 40-digit references).
 #pragma once
 
 #include <memory>
@@ -37,8 +45,9 @@ class WavinessZone {
  private:
   friend void pressure(const WavinessParams&, double, const Eigen::Ref<const Eigen::ArrayXd>&,
                        Eigen::Ref<Eigen::ArrayXd>, Form);
-  // The zone, its refusals naming `function` (the free functions' own names).
-  WavinessZone(const char* function, const WavinessParams& params, double a, Form form);
+  // The zone, its refusals naming `function` (the free functions' own names); beyond b1/2, the
+  // atoms' tables built for a zone `kept` for many calls, or for one array (detail::BeyondHalfZone).
+  WavinessZone(const char* function, const WavinessParams& params, double a, Form form, bool kept);
   // The array evaluation, its refusals naming `function`.
   void fill(const char* function, const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const;
 

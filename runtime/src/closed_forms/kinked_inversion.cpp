@@ -38,10 +38,10 @@ double BranchSide::part_at_point(BranchPart part, const PointAngles& point) cons
   return forms_.part(part, point, atoms.data());
 }
 
-double BranchSide::cauchy_part(const PointAngles& point, double eta) const {
-  if (!cauchy_table_.empty()) {
+double BranchSide::cauchy_part(const PointAngles& point, double eta, const CauchyAtomTable* table, bool build) const {
+  if (table) {
     Atoms atoms;
-    if (cauchy_table_.evaluate(std::isfinite(eta) ? eta : eta_at(point), atoms.data())) {
+    if (table->evaluate(std::isfinite(eta) ? eta : eta_at(point), atoms.data(), build)) {
       return forms_.part(other_cauchy_, point, atoms.data());
     }
   }
@@ -58,15 +58,17 @@ double BranchSide::cauchy_eta(const PointAngles& point, double other_over_own) c
   return takes_cauchy(other_over_own) ? eta_at(point) : std::numeric_limits<double>::quiet_NaN();
 }
 
-void BranchSide::tabulate_cauchy(const std::vector<double>& etas) {
+CauchyAtomTable BranchSide::cauchy_table() const {
   const BranchPart part = other_cauchy_;
-  const auto atoms = [this, part](double y, double one_plus_y, double* out) { forms_.atoms(part, y, one_plus_y, out); };
-  cauchy_table_ = CauchyAtomTable(atoms, forms_.atom_counts[static_cast<int>(part)], etas);
+  return CauchyAtomTable(
+      [atoms = forms_.atoms, part](double y, double one_plus_y, double* out) { atoms(part, y, one_plus_y, out); },
+      forms_.atom_counts[static_cast<int>(part)]);
 }
 
-double BranchSide::pressure(const PointAngles& point, double other_over_own, bool at_branch, double eta) const {
+double BranchSide::pressure(const PointAngles& point, double other_over_own, bool at_branch, double eta,
+                            const CauchyAtomTable* table, bool build) const {
   const double own = forms_.part(own_, point, own_atoms_.data());
-  if (takes_cauchy(other_over_own)) return own + cauchy_part(point, eta);
+  if (takes_cauchy(other_over_own)) return own + cauchy_part(point, eta, table, build);
   const double other = forms_.part(other_, point, other_atoms_.data());
   return at_branch ? own + other : own + other + part_at_point(BranchPart::jump, point);
 }

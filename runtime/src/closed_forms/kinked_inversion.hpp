@@ -8,7 +8,6 @@
 #include <array>
 #include <functional>
 #include <limits>
-#include <vector>
 
 #include "closed_forms/cauchy_atom_table.hpp"
 #include "wavecontact/angles.hpp"
@@ -44,27 +43,28 @@ class BranchSide {
   // the Cauchy factor's logarithm would). At the branch point itself (at_branch) the jump's term
   // is its limit, 0 (the jump vanishes like s - beta^2, the Cauchy moment grows like
   // log|s - beta^2|).
-  // With eta, the point's cauchy_eta where known already.
+  // The Cauchy part's atoms come from `table` (cauchy_table()) where one of its panels serves
+  // the point, built first if `build`, else directly; eta is the point's cauchy_eta where known
+  // already.
   double pressure(const PointAngles& point, double other_over_own, bool at_branch,
-                  double eta = std::numeric_limits<double>::quiet_NaN()) const;
+                  double eta = std::numeric_limits<double>::quiet_NaN(), const CauchyAtomTable* table = nullptr,
+                  bool build = false) const;
 
   // eta = log(1 + y) of a point where pressure() takes the Cauchy factor, NaN elsewhere.
   double cauchy_eta(const PointAngles& point, double other_over_own) const;
-  // Tabulates that part's atoms for the points of these eta (CauchyAtomTable).
-  void tabulate_cauchy(const std::vector<double>& etas);
+  // A table, empty yet, of that part's atoms.
+  CauchyAtomTable cauchy_table() const;
 
  private:
   using Atoms = std::array<double, max_branch_atoms>;
   double part_at_point(BranchPart part, const PointAngles& point) const;
-  // The other piece with its Cauchy factor, from the table where it holds the point's eta
-  // (computed here if NaN).
-  double cauchy_part(const PointAngles& point, double eta) const;
+  // The other piece with its Cauchy factor (see pressure()).
+  double cauchy_part(const PointAngles& point, double eta, const CauchyAtomTable* table, bool build) const;
   double eta_at(const PointAngles& point) const;
 
   BranchSideForms forms_;
   BranchPart own_, other_, other_cauchy_;
   Atoms own_atoms_{}, other_atoms_{};
-  CauchyAtomTable cauchy_table_;
 };
 
 }  // namespace wavecontact::detail

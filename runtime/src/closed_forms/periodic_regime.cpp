@@ -71,46 +71,62 @@ double other_over_own(double m, double Cx) {
 
 }  // namespace
 
-BeyondHalfZone::BeyondHalfZone(const WavinessParams& params, const ZoneAngles& zone)
-    : m_(params.m), top_(side_of_zone(params, zone, true)), flank_(side_of_zone(params, zone, false)) {}
+BeyondHalfZone::BeyondHalfZone(const WavinessParams& params, double a, const ZoneAngles& zone, bool on_touch)
+    : m_(params.m),
+      a_(a),
+      b1_(params.b1),
+      on_touch_(on_touch),
+      top_(side_of_zone(params, zone, true)),
+      flank_(side_of_zone(params, zone, false)),
+      top_table_(top_.cauchy_table()),
+      flank_table_(flank_.cauchy_table()) {}
 
-void BeyondHalfZone::pressures(double a, double b1, const double* x, double* p, std::size_t count,
-                               std::size_t min_points) {
-  // The angles once per point (the point's side by the sign of Cx; none outside the zone), then
-  // the Cauchy part's table from the points that take it, then the pressure.
+void BeyondHalfZone::angles(const double* x, std::size_t count, PointAngles* points, unsigned char* inside) const {
+  if (simd_pressure_available()) {
+    simd_point_angles(b1_, a_, x, count, points, inside);
+    return;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    const double r = std::fabs(reduce_to_period(x[i], b1_));
+    inside[i] = r < a_;
+    if (inside[i]) points[i] = point_angles(r, a_, b1_);
+  }
+}
+
+double BeyondHalfZone::pressure(const PointAngles& point, double eta) const {
+  return side(point).pressure(point, other_over_own(m_, point.Cx), point.Cx == 0, eta, &table(point), on_touch_);
+}
+
+void BeyondHalfZone::pressures(const double* x, double* p, std::size_t count, std::size_t min_points) const {
+  // The angles once per point (the point's side by the sign of Cx), then (unless built on touch)
+  // the tables' panels from the points that take the Cauchy part, then the pressure.
   std::vector<PointAngles> points(count);
   std::vector<double> etas(count, std::numeric_limits<double>::quiet_NaN());
   std::vector<unsigned char> inside(count, 0);
-  const bool simd = simd_pressure_available();
   for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
-    if (simd) simd_point_angles(b1, a, x + begin, end - begin, &points[begin], &inside[begin]);
+    angles(x + begin, end - begin, &points[begin], &inside[begin]);
     for (std::size_t i = begin; i < end; ++i) {
-      if (!simd) {
-        const double r = std::fabs(reduce_to_period(x[i], b1));
-        if (!(r < a)) continue;
-        inside[i] = 1;
-        points[i] = point_angles(r, a, b1);
-      }
       if (inside[i]) etas[i] = side(points[i]).cauchy_eta(points[i], other_over_own(m_, points[i].Cx));
     }
   });
-  std::vector<double> top_etas, flank_etas;
-  for (std::size_t i = 0; i < count; ++i) {
-    if (std::isfinite(etas[i])) (points[i].Cx >= 0 ? top_etas : flank_etas).push_back(etas[i]);
-  }
-  top_.tabulate_cauchy(top_etas);
-  flank_.tabulate_cauchy(flank_etas);
-  for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      p[i] = inside[i]
-                 ? side(points[i]).pressure(points[i], other_over_own(m_, points[i].Cx), points[i].Cx == 0, etas[i])
-                 : 0.0;
+  if (!on_touch_) {
+    std::vector<double> top_etas, flank_etas;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (std::isfinite(etas[i])) (points[i].Cx >= 0 ? top_etas : flank_etas).push_back(etas[i]);
     }
+    top_table_.tabulate(top_etas);
+    flank_table_.tabulate(flank_etas);
+  }
+  for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) p[i] = inside[i] ? pressure(points[i], etas[i]) : 0.0;
   });
 }
 
-double BeyondHalfZone::pressure(const PointAngles& point) const {
-  return side(point).pressure(point, other_over_own(m_, point.Cx), point.Cx == 0);
+double BeyondHalfZone::pressure(double x) const {
+  PointAngles point;
+  unsigned char inside = 0;
+  angles(&x, 1, &point, &inside);
+  return inside ? pressure(point, std::numeric_limits<double>::quiet_NaN()) : 0.0;
 }
 
 double pressure_beyond_half(const WavinessParams& p, const ZoneAngles& zone, const PointAngles& point) {

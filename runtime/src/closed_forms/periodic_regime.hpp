@@ -17,22 +17,34 @@ namespace wavecontact::detail {
 // a point 0 <= x^ < a^.
 double pressure_beyond_half(const WavinessParams& params, const ZoneAngles& zone, const PointAngles& point);
 
-// The same for many points of one zone: both sides of the kink with the zone's atoms kept.
+// The same for the points of one zone, b1/2 < a < b1: both sides of the kink with the zone's atoms
+// kept, and for each side a table of its Cauchy part's atoms (CauchyAtomTable), shared by the
+// threads. A point's angles are those of the array kernels where the CPU runs them, so that one
+// point and an array give the same bits.
 class BeyondHalfZone {
  public:
-  BeyondHalfZone(const WavinessParams& params, const ZoneAngles& zone);
-  // p at the points x (reduced to the period; 0 outside the zone |x| < a), with the atoms of the
-  // Cauchy part tabulated over the points that take it (BranchSide::tabulate_cauchy), in chunks
-  // on threads from min_points on (parallel.hpp).
-  void pressures(double a, double b1, const double* x, double* p, std::size_t count, std::size_t min_points);
-  // p at one point of the zone, 0 <= x^ < a^ (pressure_beyond_half's value).
-  double pressure(const PointAngles& point) const;
+  // Where the tables are built: `on_touch`, a panel the first time a point asks for it (every
+  // value then a function of x alone, whatever came before: the WavinessZone kept for many
+  // calls); otherwise only panels that at least CauchyAtomTable::nodes points of one call ask
+  // for (an array evaluated once).
+  BeyondHalfZone(const WavinessParams& params, double a, const ZoneAngles& zone, bool on_touch);
+  // p at the points x (any period; 0 outside the zone), in chunks on threads from min_points on
+  // (parallel.hpp).
+  void pressures(const double* x, double* p, std::size_t count, std::size_t min_points) const;
+  // p at one point x (any period).
+  double pressure(double x) const;
 
  private:
   const BranchSide& side(const PointAngles& point) const { return point.Cx >= 0 ? top_ : flank_; }
+  const CauchyAtomTable& table(const PointAngles& point) const { return point.Cx >= 0 ? top_table_ : flank_table_; }
+  // The angles of the points, where they lie in the zone (inside[i] = 1; else 0).
+  void angles(const double* x, std::size_t count, PointAngles* points, unsigned char* inside) const;
+  double pressure(const PointAngles& point, double eta) const;
 
-  double m_;
+  double m_, a_, b1_;
+  bool on_touch_;
   BranchSide top_, flank_;
+  CauchyAtomTable top_table_, flank_table_;
 };
 
 // F = dP/dSa - dP/dCa of the exact load, 0 < a <= b1, from the closed forms on either side of

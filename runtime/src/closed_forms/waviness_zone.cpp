@@ -17,14 +17,12 @@ namespace wavecontact {
 namespace {
 
 // p at x: the generated closed form (exact up to b1/2, or the printed eq. 13/14), and beyond
-// b1/2 the exact one, beyond_half(point) (detail::BeyondHalfZone's atoms).
-template <class BeyondHalf>
-double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x, Form form,
-                   const BeyondHalf& beyond_half) {
+// b1/2 the exact one from the atoms of the point's own side of the kink, computed here.
+double pressure_at(const WavinessParams& p, double a, const ZoneAngles& zone, double x, Form form) {
   const double r = std::fabs(reduce_to_period(x, p.b1));
   if (r >= a) return 0;
   const PointAngles point = point_angles(r, a, p.b1);
-  if (form == Form::exact && a > p.b1 / 2) return beyond_half(point);
+  if (form == Form::exact && a > p.b1 / 2) return detail::pressure_beyond_half(p, zone, point);
   return form == Form::exact
              ? generated::waviness_pressure_exact(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D)
              : generated::waviness_pressure_paper(p.E, p.H1, p.b1, p.m, zone.Ca, zone.Sa, point.Cx, point.Sx, point.D);
@@ -51,9 +49,9 @@ double kernel_point(const detail::SimdWavinessZone& zone, Form form, double x) {
 }  // namespace
 
 WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form)
-    : WavinessZone("wavecontact::WavinessZone", params, a, form) {}
+    : WavinessZone("wavecontact::WavinessZone", params, a, form, true) {}
 
-WavinessZone::WavinessZone(const char* function, const WavinessParams& params, double a, Form form)
+WavinessZone::WavinessZone(const char* function, const WavinessParams& params, double a, Form form, bool kept)
     : params_(params), a_(a), form_(form) {
   validate(params, function);
   detail::require_waviness_half_width(function, params, a, form);
@@ -61,14 +59,14 @@ WavinessZone::WavinessZone(const char* function, const WavinessParams& params, d
   sin_a_ = sine_of(angles_);
   point_kernel_ = point_kernel(params, a);
   if (form == Form::exact && a > params.b1 / 2)
-    beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, angles_);
+    beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, a, angles_, kept);
 }
 
 double WavinessZone::pressure(double x) const {
   detail::require_finite("wavecontact::WavinessZone::pressure", "x", x);
   if (point_kernel_) return kernel_point(simd_zone(params_, a_, angles_, sin_a_), form_, x);
-  return pressure_at(params_, a_, angles_, x, form_,
-                     [this](const PointAngles& point) { return beyond_half_->pressure(point); });
+  if (beyond_half_) return beyond_half_->pressure(x);
+  return pressure_at(params_, a_, angles_, x, form_);
 }
 
 void WavinessZone::pressure(const Eigen::Ref<const Eigen::ArrayXd>& x, Eigen::Ref<Eigen::ArrayXd> p) const {
@@ -89,8 +87,7 @@ void WavinessZone::fill(const char* function, const Eigen::Ref<const Eigen::Arra
   double* ps = p.data();
   if (beyond_half_) {
     detail::require_finite_points(function, x);
-    detail::BeyondHalfZone tables = *beyond_half_;  // the Cauchy atoms' tables are the call's
-    tables.pressures(a_, params_.b1, xs, ps, count, parallel_points_costly);
+    beyond_half_->pressures(xs, ps, count, parallel_points_costly);
     return;
   }
   const bool simd = detail::simd_pressure_available();
@@ -122,15 +119,13 @@ double pressure(const WavinessParams& params, double a, double x, Form form) {
   detail::require_finite(function, "x", x);
   const ZoneAngles zone = zone_angles(a, params.b1);
   if (point_kernel(params, a)) return kernel_point(simd_zone(params, a, zone, sine_of(zone)), form, x);
-  // One point beyond b1/2 needs the atoms of its own side of the kink only.
-  return pressure_at(params, a, zone, x, form,
-                     [&](const PointAngles& point) { return detail::pressure_beyond_half(params, zone, point); });
+  return pressure_at(params, a, zone, x, form);
 }
 
 void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
               Eigen::Ref<Eigen::ArrayXd> p, Form form) {
   constexpr const char* function = "wavecontact::pressure";
-  WavinessZone(function, params, a, form).fill(function, x, p);
+  WavinessZone(function, params, a, form, false).fill(function, x, p);
 }
 
 Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {

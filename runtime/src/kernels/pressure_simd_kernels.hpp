@@ -97,31 +97,51 @@ inline double sinpi_half(double t, double c) {
 // each sine by sinpi_half. b1 - 2r, b1 - r, b1 - (a - r) and a + r - b1 are exact where they are
 // used (Sterbenz), a - r for r >= a/2: every atom keeps its relative accuracy, as angles.cpp's do
 // (point_angles: D from the same product, Cx with the rounding of x/b1 corrected to first order).
-void compute_atoms_any(double b1, double a, const double* x, Atoms& out) {
+// atoms_any_at is one point's, the loop's body, inlined there so that the loop vectorises.
+inline PointAtoms atoms_any_at(double b1, double a, double x) {
   const double period = 2 * b1, inv_period = 0.5 / b1;
+  const double r = std::fabs(std::fma(-std::nearbyint(x * inv_period), period, x));
+  const double h = r * inv_period, w = (b1 - 2 * r) * inv_period;
+  const double sin_h = generated::sinpi_quarter(h), sin_rest = generated::sinpi_quarter((b1 - r) * inv_period);
+  const double Sx = h <= 0.25 ? 2 * sin_h * sin_h : std::fma(-2 * sin_rest, sin_rest, 2.0);
+  const double difference = a - r, sum = a + r;
+  const double d = difference * inv_period, d_rest = (b1 - difference) * inv_period;
+  const double s = (sum <= b1 ? sum : period - sum) * inv_period, s_rest = std::fabs(b1 - sum) * inv_period;
+  PointAtoms out;
+  out.r = r;
+  out.Sx = Sx;
+  out.Cx = std::fabs(w) <= 0.25 ? generated::sinpi_quarter(w) : 1 - Sx;
+  out.D = 2 * sinpi_half(s, s_rest) * sinpi_half(d, d_rest);
+  return out;
+}
+
+void compute_atoms_any(double b1, double a, const double* x, Atoms& out) {
   for (std::size_t k = 0; k < block; ++k) {
-    const double r = std::fabs(std::fma(-std::nearbyint(x[k] * inv_period), period, x[k]));
-    const double h = r * inv_period, w = (b1 - 2 * r) * inv_period;
-    const double sin_h = generated::sinpi_quarter(h), sin_rest = generated::sinpi_quarter((b1 - r) * inv_period);
-    const double Sx = h <= 0.25 ? 2 * sin_h * sin_h : std::fma(-2 * sin_rest, sin_rest, 2.0);
-    const double difference = a - r, sum = a + r;
-    const double d = difference * inv_period, d_rest = (b1 - difference) * inv_period;
-    const double s = (sum <= b1 ? sum : period - sum) * inv_period, s_rest = std::fabs(b1 - sum) * inv_period;
-    out.r[k] = r;
-    out.Sx[k] = Sx;
-    out.Cx[k] = std::fabs(w) <= 0.25 ? generated::sinpi_quarter(w) : 1 - Sx;
-    out.D[k] = 2 * sinpi_half(s, s_rest) * sinpi_half(d, d_rest);
+    const PointAtoms atoms = atoms_any_at(b1, a, x[k]);
+    out.r[k] = atoms.r;
+    out.Sx[k] = atoms.Sx;
+    out.Cx[k] = atoms.Cx;
+    out.D[k] = atoms.D;
   }
 }
 
 // The atoms of the points x[i], i < count, of the zone 0 < a <= b1 (compute_atoms_any), into
-// angles[i] where r = |x| reduced to the period is < a, inside[i] = whether it is.
+// angles[i] where r = |x| reduced to the period is < a, inside[i] = whether it is. A few points
+// (a tail below block/8) are taken one by one, with the same arithmetic.
 void point_angles_kernel(double b1, double a, const double* x, std::size_t count, PointAngles* angles,
                          unsigned char* inside) {
   Atoms atoms;
   alignas(64) double padded[block];
   for (std::size_t start = 0; start < count; start += block) {
     const std::size_t n = std::min(block, count - start);
+    if (n < block / 8) {
+      for (std::size_t k = start; k < count; ++k) {
+        const PointAtoms point = atoms_any_at(b1, a, x[k]);
+        inside[k] = point.r < a;
+        angles[k] = {point.Cx, point.Sx, point.D};
+      }
+      return;
+    }
     const double* points = x + start;
     if (n < block) {
       std::fill(std::copy(points, points + n, padded), padded + block, 0.0);
