@@ -35,25 +35,36 @@ std::string fixed(double value) {
   return text;
 }
 
-// t (hi + (lo + u (c_1 + u (c_2 + ...)))), u = t^2, with fused multiply-adds.
-std::string evaluator(const BoundedSine& sine) {
+// t (hi + (lo + u (c_1 + u (c_2 + ...)))), u = t^2: with fused multiply-adds (t hi exact in the
+// last), or, for a CPU without them, with every product and sum rounded apart (sine.name +
+// "_unfused": t hi then carries a rounding of its own).
+std::string evaluator(const BoundedSine& sine, bool fused) {
   const std::vector<numeric>& c = sine.coefficients;
+  const auto multiply_add = [fused](const std::string& a, const std::string& b, const std::string& c) {
+    return fused ? "fma(" + a + ", " + b + ", " + c + ")" : "(" + a + " * " + b + " + " + c + ")";
+  };
   std::string tail = "Scalar(" + double_literal(c.back()) + ")";
-  for (std::size_t k = c.size() - 1; k-- > 1;) {
-    tail = "fma(u, " + tail + ", Scalar(" + double_literal(c[k]) + "))";
-  }
+  for (std::size_t k = c.size() - 1; k-- > 1;) tail = multiply_add("u", tail, "Scalar(" + double_literal(c[k]) + ")");
+  const std::string hi = "Scalar(" + double_literal(c[0]) + ")";
+  const std::string low_and_tail = multiply_add("u", "tail", "Scalar(" + double_literal(sine.lead_low) + ")");
   std::ostringstream os;
-  const int fmas = static_cast<int>(c.size());  // c.size() - 2 in the tail, lo's, hi's
+  const int products = static_cast<int>(c.size());  // c.size() - 2 in the tail, lo's, hi's
   os << "// sin(pi t) for |t| <= " << sine.bound << ": degree " << c.size() - 1
      << " in u = t^2, relative error of the polynomial\n// with these coefficients "
      << scientific(sine.relative_error.to_double()) << " (" << fixed(sine.relative_error.to_double() / epsilon)
-     << " eps); t outside the bound "
-     << "gives a finite, meaningless value.\n// Total ops: " << fmas + 2 << " (" << fmas << " fma, 2 mul)\n"
-     << "template <typename Scalar>\ninline Scalar " << sine.name << "(const Scalar& t) {\n"
-     << "  using std::fma;\n  const Scalar u = t * t;\n"
+     << " eps); t outside the bound gives a finite, meaningless value.\n";
+  if (fused) {
+    os << "// Total ops: " << products + 2 << " (" << products << " fma, 2 mul)\n";
+  } else {
+    os << "// The same with every product and sum rounded apart, for a CPU without fused multiply-adds.\n"
+       << "// Total ops: " << 2 * products + 2 << " (" << products << " add, " << products + 2 << " mul)\n";
+  }
+  os << "template <typename Scalar>\ninline Scalar " << sine.name << (fused ? "" : "_unfused")
+     << "(const Scalar& t) {\n"
+     << (fused ? "  using std::fma;\n" : "") << "  const Scalar u = t * t;\n"
      << "  const Scalar tail = " << tail << ";\n"
-     << "  return fma(t, Scalar(" << double_literal(c[0]) << "), t * fma(u, tail, Scalar("
-     << double_literal(sine.lead_low) << ")));\n}\n";
+     << "  return " << (fused ? "fma(t, " + hi + ", t * " + low_and_tail + ")" : "t * " + hi + " + t * " + low_and_tail)
+     << ";\n}\n";
   return os.str();
 }
 
@@ -97,9 +108,10 @@ std::string trigonometry_header(const BoundedSine& quarter, const std::string& c
      << " digits, derive/formulas/minimax.cpp),\n// the coefficients rounded to "
         "doubles, p's constant term as two doubles (hi + lo), and the error\n// measured again "
         "with the rounded values (bound: 2^-55 = eps/8). tests/trigonometry_test.cpp measures\n"
-        "// it as evaluated, within 1 ulp.\n"
+        "// it as evaluated: within 1 ulp, and 2 ulp without fused multiply-adds.\n"
         "#pragma once\n\n#include <cmath>\n\nnamespace wavecontact::generated {\n\n"
-     << evaluator(quarter) << "\n}  // namespace wavecontact::generated\n";
+     << evaluator(quarter, true) << "\n"
+     << evaluator(quarter, false) << "\n}  // namespace wavecontact::generated\n";
   return os.str();
 }
 

@@ -28,7 +28,7 @@ GiNaC::numeric bounded_sine_tolerance();
 BoundedSine bounded_sine(const std::string& name, const GiNaC::numeric& bound);
 
 // generated/bounded_trigonometry.hpp: sinpi_quarter (|t| <= 1/4), with its degree and
-// measured error.
+// measured error, and sinpi_quarter_unfused, the same without fused multiply-adds.
 std::string trigonometry_header(const BoundedSine& quarter, const std::string& command);
 
 // The polynomial of generated/: sinpi_quarter, |t| <= 1/4.
