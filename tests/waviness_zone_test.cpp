@@ -54,12 +54,34 @@ BOOST_AUTO_TEST_CASE(zone_gives_the_free_functions_values_bit_for_bit_up_to_half
                      "array, m = " << m << ", a/b1 = " << ratio << ", x = " << x[i] << ": zone " << zone_array[i]
                                    << ", free " << free_array[i]);
           BOOST_TEST(same_bits(into[i], zone_array[i]));
+          BOOST_TEST(same_bits(zone_scalar, zone_array[i]),
+                     "point and array, m = " << m << ", a/b1 = " << ratio << ", x = " << x[i] << ": point "
+                                             << zone_scalar << ", array " << zone_array[i]);
           ++compared;
         }
       }
     }
   }
   BOOST_TEST(compared == 5 * 4 * 2 * 203);
+}
+
+// The printed eq. 13/14 continued beyond b1/2 (where 1 + m cos(pi a/b1) > 0) lies outside the
+// array kernels' bounded arguments: an array takes each point as one point does.
+BOOST_AUTO_TEST_CASE(printed_form_beyond_half_arrays_give_the_points_values) {
+  std::mt19937_64 random(5);
+  for (double m : {0.0, 0.2, 1.0}) {
+    const WavinessParams p{0.7, 3.0, m, 2e5};
+    const double a = 0.71 * p.b1;
+    const Eigen::ArrayXd x = points_around(p, a, random);
+    const Eigen::ArrayXd array = pressure(p, a, x, Form::paper),
+                         zone_array = WavinessZone(p, a, Form::paper).pressure(x);
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      const double point = pressure(p, a, x[i], Form::paper);
+      BOOST_TEST(same_bits(array[i], point),
+                 "m = " << m << ", x = " << x[i] << ": array " << array[i] << ", point " << point);
+      BOOST_TEST(same_bits(zone_array[i], point));
+    }
+  }
 }
 
 // Beyond b1/2 a zone reads the Cauchy part's atoms from panels it builds on first use: its

@@ -1,7 +1,8 @@
 // Which instruction set the array kernels run on (waviness.hpp, two_scale.hpp): the best the
 // CPU has, or the one the environment variable WAVECONTACT_ISA asks for, capped at the CPU's
 // (a path the CPU lacks cannot run). Read once, at the first array evaluation.
-//   WAVECONTACT_ISA=scalar   the scalar loops (what CPUs without AVX2 + FMA take)
+//   WAVECONTACT_ISA=scalar   the kernels' arithmetic one point at a time, without FMA (what CPUs
+//                            without AVX2 + FMA take; the roughness there point by point)
 //   WAVECONTACT_ISA=avx2     the AVX2 + FMA kernels, sincospi 4 wide
 //   WAVECONTACT_ISA=avx512   the same with sincospi 8 wide (AVX-512F)
 #pragma once

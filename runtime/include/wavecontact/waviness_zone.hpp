@@ -3,7 +3,7 @@
 // of the closed forms on both sides of the kink) is computed by the constructor, so that a
 // point costs only its own angles and terms.
 // - Up to b1/2 its values are those of the free functions of waviness.hpp, bit for bit (they
-//   build the same evaluation per call).
+//   build the same evaluation per call), from a point or an array alike.
 // - Beyond b1/2, near the other branch's pole, a point needs atoms of its own (the Cauchy
 //   part's, series of hundreds of terms). The zone tabulates them in log(1 + y), a panel of 16
 //   nodes the first time a point falls into it (some tens of microseconds, once), and reads
@@ -55,8 +55,8 @@ class WavinessZone {
   double a_;
   Form form_;
   ZoneAngles angles_;
-  double sin_a_;       // sin(pi a/b1), for the array kernels' arithmetic
-  bool point_kernel_;  // a <= b1/2 on a CPU with the array kernels: one point by their arithmetic
+  double sin_a_;  // sin(pi a/b1), for the array kernels' arithmetic
+  bool kernels_;  // a <= b1/2: points and arrays by the array kernels' arithmetic
   std::shared_ptr<const detail::BeyondHalfZone> beyond_half_;  // the exact form beyond b1/2; else null
 };
 

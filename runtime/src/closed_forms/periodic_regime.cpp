@@ -81,18 +81,6 @@ BeyondHalfZone::BeyondHalfZone(const WavinessParams& params, double a, const Zon
       top_table_(top_.cauchy_table()),
       flank_table_(flank_.cauchy_table()) {}
 
-void BeyondHalfZone::angles(const double* x, std::size_t count, PointAngles* points, unsigned char* inside) const {
-  if (simd_pressure_available()) {
-    simd_point_angles(b1_, a_, x, count, points, inside);
-    return;
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    const double r = std::fabs(reduce_to_period(x[i], b1_));
-    inside[i] = r < a_;
-    if (inside[i]) points[i] = point_angles(r, a_, b1_);
-  }
-}
-
 double BeyondHalfZone::pressure(const PointAngles& point, double eta) const {
   return side(point).pressure(point, other_over_own(m_, point.Cx), point.Cx == 0, eta, &table(point), on_touch_);
 }
@@ -104,7 +92,7 @@ void BeyondHalfZone::pressures(const double* x, double* p, std::size_t count, st
   std::vector<double> etas(count, std::numeric_limits<double>::quiet_NaN());
   std::vector<unsigned char> inside(count, 0);
   for_each_chunk(count, simd_block, min_points, [&](std::size_t begin, std::size_t end) {
-    angles(x + begin, end - begin, &points[begin], &inside[begin]);
+    simd_point_angles(b1_, a_, x + begin, end - begin, &points[begin], &inside[begin]);
     for (std::size_t i = begin; i < end; ++i) {
       if (inside[i]) etas[i] = side(points[i]).cauchy_eta(points[i], other_over_own(m_, points[i].Cx));
     }
@@ -125,7 +113,7 @@ void BeyondHalfZone::pressures(const double* x, double* p, std::size_t count, st
 double BeyondHalfZone::pressure(double x) const {
   PointAngles point;
   unsigned char inside = 0;
-  angles(&x, 1, &point, &inside);
+  simd_point_angles(b1_, a_, &x, 1, &point, &inside);
   return inside ? pressure(point, std::numeric_limits<double>::quiet_NaN()) : 0.0;
 }
 

@@ -19,7 +19,7 @@ double pressure_beyond_half(const WavinessParams& params, const ZoneAngles& zone
 
 // The same for the points of one zone, b1/2 < a < b1: both sides of the kink with the zone's atoms
 // kept, and for each side a table of its Cauchy part's atoms (CauchyAtomTable), shared by the
-// threads. A point's angles are those of the array kernels where the CPU runs them, so that one
+// threads. A point's angles are those of the array kernels (simd_point_angles), so that one
 // point and an array give the same bits.
 class BeyondHalfZone {
  public:
@@ -37,8 +37,6 @@ class BeyondHalfZone {
  private:
   const BranchSide& side(const PointAngles& point) const { return point.Cx >= 0 ? top_ : flank_; }
   const CauchyAtomTable& table(const PointAngles& point) const { return point.Cx >= 0 ? top_table_ : flank_table_; }
-  // The angles of the points, where they lie in the zone (inside[i] = 1; else 0).
-  void angles(const double* x, std::size_t count, PointAngles* points, unsigned char* inside) const;
   double pressure(const PointAngles& point, double eta) const;
 
   double m_, a_, b1_;

@@ -201,7 +201,7 @@ double TwoScaleContact::roughness_pressure(double x) const {
 void TwoScaleContact::add_roughness_pressure(const Eigen::Ref<const Eigen::ArrayXd>& x,
                                              Eigen::Ref<Eigen::ArrayXd> p) const {
   const WavinessParams& w = params_.waviness;
-  const bool simd = form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_pressure_available();
+  const bool simd = form_ == Form::exact && a_ <= w.b1 / 2 && detail::simd_roughness_available();
   const int n = params_.roughness.n;
   const detail::RoughnessZone zone{
       w.b1, a_, zone_.Ca, zone_.Sa, pi / w.b1 * w.E * params_.roughness.H2 * n / 2, legendre_.data(), n};

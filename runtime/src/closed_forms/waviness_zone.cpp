@@ -38,10 +38,10 @@ detail::SimdWavinessZone simd_zone(const WavinessParams& p, double a, const Zone
 
 double sine_of(const ZoneAngles& zone) { return std::sqrt(zone.Sa * (1 + zone.Ca)); }
 
-// Where the CPU runs the array kernels and a <= b1/2, one point takes their arithmetic (the
-// same atoms and closed form, compiled for the vector unit's ISA, with its fused
-// multiply-adds), x reduced to the period exactly first.
-bool point_kernel(const WavinessParams& p, double a) { return a <= p.b1 / 2 && detail::simd_pressure_available(); }
+// Up to a = b1/2 (the kernels' bounded arguments), points and arrays take the array kernels'
+// arithmetic (the same atoms and closed form, compiled for array_kernel_isa()), one point
+// with x reduced to the period exactly first. Beyond, the printed form takes pressure_at.
+bool kernels_serve(const WavinessParams& p, double a) { return a <= p.b1 / 2; }
 double kernel_point(const detail::SimdWavinessZone& zone, Form form, double x) {
   return detail::simd_point_pressure(zone, form, std::fabs(x) <= zone.b1 ? x : reduce_to_period(x, zone.b1));
 }
@@ -57,14 +57,14 @@ WavinessZone::WavinessZone(const char* function, const WavinessParams& params, d
   detail::require_waviness_half_width(function, params, a, form);
   angles_ = zone_angles(a, params.b1);
   sin_a_ = sine_of(angles_);
-  point_kernel_ = point_kernel(params, a);
+  kernels_ = kernels_serve(params, a);
   if (form == Form::exact && a > params.b1 / 2)
     beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, a, angles_, kept);
 }
 
 double WavinessZone::pressure(double x) const {
   detail::require_finite("wavecontact::WavinessZone::pressure", "x", x);
-  if (point_kernel_) return kernel_point(simd_zone(params_, a_, angles_, sin_a_), form_, x);
+  if (kernels_) return kernel_point(simd_zone(params_, a_, angles_, sin_a_), form_, x);
   if (beyond_half_) return beyond_half_->pressure(x);
   return pressure_at(params_, a_, angles_, x, form_);
 }
@@ -90,10 +90,9 @@ void WavinessZone::fill(const char* function, const Eigen::Ref<const Eigen::Arra
     beyond_half_->pressures(xs, ps, count, parallel_points_costly);
     return;
   }
-  const bool simd = detail::simd_pressure_available();
   const detail::SimdWavinessZone zone = simd_zone(params_, a_, angles_, sin_a_);
   // A few points: one at a time (a block of the array kernels costs 256 points' work).
-  if (point_kernel_ && count < few_points) {
+  if (kernels_ && count < few_points) {
     for (std::size_t i = 0; i < count; ++i) detail::require_finite(function, "x", xs[i]);
     for (std::size_t i = 0; i < count; ++i) ps[i] = kernel_point(zone, form_, xs[i]);
     return;
@@ -103,7 +102,7 @@ void WavinessZone::fill(const char* function, const Eigen::Ref<const Eigen::Arra
       count, detail::simd_block, parallel_points,
       [xs](std::size_t begin, std::size_t end) { return detail::all_finite(xs + begin, end - begin); },
       [&](std::size_t begin, std::size_t end) {
-        if (simd) {
+        if (kernels_) {
           detail::simd_pressure(zone, form_, xs + begin, ps + begin, end - begin);
         } else {
           for (std::size_t i = begin; i < end; ++i) ps[i] = pressure(xs[i]);
@@ -118,7 +117,7 @@ double pressure(const WavinessParams& params, double a, double x, Form form) {
   detail::require_waviness_half_width(function, params, a, form);
   detail::require_finite(function, "x", x);
   const ZoneAngles zone = zone_angles(a, params.b1);
-  if (point_kernel(params, a)) return kernel_point(simd_zone(params, a, zone, sine_of(zone)), form, x);
+  if (kernels_serve(params, a)) return kernel_point(simd_zone(params, a, zone, sine_of(zone)), form, x);
   return pressure_at(params, a, zone, x, form);
 }
 

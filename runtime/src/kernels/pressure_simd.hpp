@@ -3,9 +3,10 @@
 // the generated waviness closed form or the roughness series with the zone's generated
 // Legendre coefficients, all in loops the compiler vectorises (pressure_simd_kernels.hpp); and
 // the check that an array's points are finite.
-// Built once per ISA in its own translation unit (pressure_simd_avx2.cpp: AVX2 + FMA;
-// pressure_simd_avx512.cpp: AVX-512F; both from pressure_simd_unit.inc) and chosen at run
-// time (array_kernel_isa()); other CPUs take the scalar paths.
+// Built once per ISA in its own translation unit, all from pressure_simd_unit.inc
+// (pressure_simd_avx2.cpp: AVX2 + FMA; pressure_simd_avx512.cpp: AVX-512F;
+// pressure_simd_scalar.cpp: neither vectors nor FMA, the waviness's kernels only) and chosen at
+// run time (array_kernel_isa()). Without AVX2 the roughness takes its scalar path.
 #pragma once
 
 #include <cstddef>
@@ -29,20 +30,21 @@ struct RoughnessZone {
   int n;
 };
 
-// Whether this CPU runs the vector kernels (array_kernel_isa() is not scalar).
-bool simd_pressure_available();
+// Whether this CPU runs the roughness's vector kernel (array_kernel_isa() is not scalar).
+bool simd_roughness_available();
 
 // Points per pass of the kernels; a multiple of 8.
 inline constexpr std::size_t simd_block = 256;
 
 // p[i] for the points x[i], i < count (finite, any period); 0 outside the zone. On the
-// widest ISA of array_kernel_isa(); call only if simd_pressure_available().
+// ISA of array_kernel_isa().
 void simd_pressure(const SimdWavinessZone& zone, Form form, const double* x, double* p, std::size_t count);
 
 // p at one point x, |x| <= b1, by the same arithmetic; as above.
 double simd_point_pressure(const SimdWavinessZone& zone, Form form, double x);
 
-// p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period); as above.
+// p[i] += p_r(x[i]) for the points x[i], i < count (finite, any period); call only if
+// simd_roughness_available().
 void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count);
 
 // The angle atoms of the points x[i], i < count (finite, any period), for a zone 0 < a <= b1,
@@ -57,9 +59,14 @@ bool simd_all_finite(const double* x, std::size_t count);
 // The same per ISA.
 namespace avx2 {
 #include "kernels/pressure_simd_entry_points.inc"
+void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count);
 }  // namespace avx2
 namespace avx512 {
 #include "kernels/pressure_simd_entry_points.inc"
+void simd_add_roughness_pressure(const RoughnessZone& zone, const double* x, double* p, std::size_t count);
 }  // namespace avx512
+namespace scalar {
+#include "kernels/pressure_simd_entry_points.inc"
+}  // namespace scalar
 
 }  // namespace wavecontact::detail

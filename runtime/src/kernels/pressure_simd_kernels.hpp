@@ -23,6 +23,39 @@ namespace {
 
 constexpr std::size_t block = simd_block;  // points per pass
 
+// The unit's arithmetic: fused multiply-adds and the derived sine built on them where its ISA
+// has FMA (AVX2, AVX-512), else every product and sum rounded apart (the scalar unit, for CPUs
+// without FMA; sinpi_quarter_unfused, within 2 ulp). Where the kernels call multiply_add, the
+// product is at most twice the result or the sum does not cancel, so that unfused it costs a
+// rounding of about the result's size, no more.
+inline double multiply_add(double a, double b, double c) {
+#if defined(__FMA__)
+  return std::fma(a, b, c);
+#else
+  return a * b + c;
+#endif
+}
+
+inline double bounded_sinpi(double t) {
+#if defined(__FMA__)
+  return generated::sinpi_quarter(t);
+#else
+  return generated::sinpi_quarter_unfused(t);
+#endif
+}
+
+// r = |x| reduced to the period 2 b1, exactly: x - n 2 b1 with one rounding. Without FMA in the
+// ISA, the points of the central period (n = 0) as they are and the others by std::fma, which
+// the C library rounds correctly in software where the CPU cannot.
+inline double reduced_distance(double x, double b1) {
+  const double period = 2 * b1, inv_period = 0.5 / b1;
+#if defined(__FMA__)
+  return std::fabs(std::fma(-std::nearbyint(x * inv_period), period, x));
+#else
+  return std::fabs(x) <= b1 ? std::fabs(x) : std::fabs(std::fma(-std::nearbyint(x * inv_period), period, x));
+#endif
+}
+
 struct Atoms {
   alignas(64) double r[block], Cx[block], Sx[block], D[block];
 };
@@ -50,22 +83,22 @@ struct PointAtoms {
 
 template <bool with_cosine>
 inline PointAtoms atoms_at(double b1, double a, double sin_a, double cos_a, double x) {
-  const double period = 2 * b1, inv_period = 0.5 / b1;
+  const double inv_period = 0.5 / b1;
   PointAtoms out;
-  out.r = std::fabs(std::fma(-std::nearbyint(x * inv_period), period, x));
+  out.r = reduced_distance(x, b1);
   const double d = (a - out.r) * inv_period;
-  const double sin_h = generated::sinpi_quarter(out.r * inv_period);
-  const double sin_d = generated::sinpi_quarter(d);
-  const double sin_half_d = generated::sinpi_quarter(d * 0.5);
+  const double sin_h = bounded_sinpi(out.r * inv_period);
+  const double sin_d = bounded_sinpi(d);
+  const double sin_half_d = bounded_sinpi(d * 0.5);
   out.Sx = 2 * sin_h * sin_h;
-  const double cos_d = std::fma(-2 * sin_half_d, sin_half_d, 1.0);
+  const double cos_d = multiply_add(-2 * sin_half_d, sin_half_d, 1.0);
   if constexpr (with_cosine) {
     const double w = (b1 - 2 * out.r) * inv_period;
-    out.Cx = w <= 0.25 ? generated::sinpi_quarter(w) : 1 - out.Sx;
+    out.Cx = w <= 0.25 ? bounded_sinpi(w) : 1 - out.Sx;
   } else {
     out.Cx = 0;
   }
-  out.D = 2 * sin_d * std::fma(sin_a, cos_d, -cos_a * sin_d);
+  out.D = 2 * sin_d * multiply_add(sin_a, cos_d, -cos_a * sin_d);
   return out;
 }
 
@@ -83,8 +116,8 @@ void compute_atoms(double b1, double a, double sin_a, double cos_a, const double
 // sin(pi t) for 0 <= t <= 1/2 given also c = 1/2 - t (each with its own relative rounding):
 // sin(pi t) = cos(pi c) = 1 - 2 sin^2(pi c/2) beyond t = 1/4, where it is >= 1/sqrt2.
 inline double sinpi_half(double t, double c) {
-  const double s = generated::sinpi_quarter(0.5 * c);
-  return t <= 0.25 ? generated::sinpi_quarter(t) : std::fma(-2 * s, s, 1.0);
+  const double s = bounded_sinpi(0.5 * c);
+  return t <= 0.25 ? bounded_sinpi(t) : multiply_add(-2 * s, s, 1.0);
 }
 
 // The atoms of angles.hpp for a block of points of any zone 0 < a <= b1 (the zone beyond b1/2,
@@ -100,17 +133,17 @@ inline double sinpi_half(double t, double c) {
 // atoms_any_at is one point's, the loop's body, inlined there so that the loop vectorises.
 inline PointAtoms atoms_any_at(double b1, double a, double x) {
   const double period = 2 * b1, inv_period = 0.5 / b1;
-  const double r = std::fabs(std::fma(-std::nearbyint(x * inv_period), period, x));
+  const double r = reduced_distance(x, b1);
   const double h = r * inv_period, w = (b1 - 2 * r) * inv_period;
-  const double sin_h = generated::sinpi_quarter(h), sin_rest = generated::sinpi_quarter((b1 - r) * inv_period);
-  const double Sx = h <= 0.25 ? 2 * sin_h * sin_h : std::fma(-2 * sin_rest, sin_rest, 2.0);
+  const double sin_h = bounded_sinpi(h), sin_rest = bounded_sinpi((b1 - r) * inv_period);
+  const double Sx = h <= 0.25 ? 2 * sin_h * sin_h : multiply_add(-2 * sin_rest, sin_rest, 2.0);
   const double difference = a - r, sum = a + r;
   const double d = difference * inv_period, d_rest = (b1 - difference) * inv_period;
   const double s = (sum <= b1 ? sum : period - sum) * inv_period, s_rest = std::fabs(b1 - sum) * inv_period;
   PointAtoms out;
   out.r = r;
   out.Sx = Sx;
-  out.Cx = std::fabs(w) <= 0.25 ? generated::sinpi_quarter(w) : 1 - Sx;
+  out.Cx = std::fabs(w) <= 0.25 ? bounded_sinpi(w) : 1 - Sx;
   out.D = 2 * sinpi_half(s, s_rest) * sinpi_half(d, d_rest);
   return out;
 }
@@ -188,6 +221,7 @@ void waviness_blocks(const SimdWavinessZone& z, const double* x, double* p, std:
       [p](std::size_t i, double value) { p[i] = value; });
 }
 
+#if defined(__AVX2__)  // the roughness's kernel, on the vector units' intrinsics
 // sum_{j<n} P_{n-1-j}(Ca) V_j(Cx) by Clenshaw's recurrence in Reinsch's form,
 // d_j = (c_j + d_{j+1}) - 2 Sx b_{j+1}, b_j = d_j + b_{j+1}, as the generated
 // roughness_n<N>_pressure does per point (derive/formulas/roughness.hpp): here the coefficients come
@@ -258,6 +292,8 @@ void roughness_block(const RoughnessZone& z, const Atoms& atoms, double* value) 
   }
 }
 
+#endif
+
 // Whether every x[i], i < count, is finite: its exponent bits not all set (integer tests that
 // vectorise, with no branch until the end).
 bool all_finite_kernel(const double* x, std::size_t count) {
@@ -294,11 +330,13 @@ double point_pressure_kernel(const SimdWavinessZone& z, Form form, double x) {
              : generated::waviness_pressure_paper(z.E, z.H1, z.b1, z.m, z.Ca, z.Sa, atoms.Cx, atoms.Sx, atoms.D);
 }
 
+#if defined(__AVX2__)
 void add_roughness_kernel(const RoughnessZone& z, const double* x, double* p, std::size_t count) {
   pressure_blocks<false>(
       z.b1, z.a, z.Ca, z.Sa, x, count, [&](const Atoms& atoms, double* value) { roughness_block(z, atoms, value); },
       [p](std::size_t i, double value) { p[i] += value; });
 }
+#endif
 
 }  // namespace
 }  // namespace wavecontact::detail
