@@ -62,21 +62,21 @@ struct Atoms {
 
 // The atoms of angles.hpp for a block of points, from the derived sin(pi t), |t| <= 1/4
 // (generated/bounded_trigonometry.hpp: no range reduction), by exact identities. With r = |x|
-// reduced to the period, h = r/(2 b1) = x^/(2 pi), w = (b1 - 2r)/(2 b1) = 1/2 - 2h and
-// d = (a - r)/(2 b1) = (a^ - x^)/(2 pi):
-//   Sx = 1 - cos x^ = 2 sin^2(pi h),
-//   Cx = cos x^ = sin(pi w) where w <= 1/4 (x^ >= pi/4), else 1 - Sx (Cx > 1/sqrt2: exact
-//        enough, no cancellation),
+// reduced to the period, h = r/(2 b1) = x^/(2 pi) and d = (a - r)/(2 b1) = (a^ - x^)/(2 pi):
 //   D  = cos x^ - cos a^ = 2 sin(pi d) sin(a^ - pi d)
-//      = 2 sin(pi d) (sin a^ cos(pi d) - cos a^ sin(pi d)),  cos(pi d) = 1 - 2 sin^2(pi d/2).
+//      = 2 sin(pi d) (sin a^ cos(pi d) - cos a^ sin(pi d)),  cos(pi d) = 1 - 2 sin^2(pi d/2),
+//   Cx = cos x^ = cos a^ + D (with_cosine: the waviness's),
+//   Sx = 1 - cos x^ = 2 sin^2(pi h) (without: the roughness's, which takes 1 + cos x^ as 2 - Sx).
 // In the zone (r < a <= b1/2) h, d <= 1/4; each argument carries a relative error of a few eps
-// at most (b1 - 2r is exact for r >= b1/4, a - r for r >= a/2), which sin(pi t) does not
-// amplify there; the subtraction in D loses nothing (a^ - pi d lies in [a^/2, a^], within
-// [0, pi/2], so its first term is at most twice the result): every atom keeps its relative
-// accuracy, Cx where cos x^ -> 0, D at the zone's edge, Sx at its centre. Outside the zone
-// the values are finite and discarded. sin_a = sin a^, cos_a = cos a^. Without with_cosine, Cx
-// is left unwritten (the roughness takes 1 + cos x^ as 2 - Sx). atoms_at is one point's, the
-// loop's body, inlined there so that the loop vectorises.
+// at most (a - r is exact for r >= a/2), which sin(pi t) does not amplify there; the
+// subtraction in D loses nothing (a^ - pi d lies in [a^/2, a^], within [0, pi/2], so its first
+// term is at most twice the result), and Cx adds two terms >= 0 (cos a^ >= 0 for a <= b1/2,
+// D >= 0 in the zone): every atom keeps its relative accuracy, Cx where cos x^ -> 0, D at the
+// zone's edge, Sx at its centre. Outside the zone the values are finite and discarded. sin_a =
+// sin a^, cos_a = cos a^. With the cosine, Sx is 1 - Cx, which the waviness's closed forms do
+// not read (accuracy_test would show one that did: it loses Sx's relative accuracy near the
+// centre); without, Cx is 0. atoms_at is one point's, the loop's body, inlined there so that
+// the loop vectorises.
 struct PointAtoms {
   double r, Cx, Sx, D;
 };
@@ -87,18 +87,18 @@ inline PointAtoms atoms_at(double b1, double a, double sin_a, double cos_a, doub
   PointAtoms out;
   out.r = reduced_distance(x, b1);
   const double d = (a - out.r) * inv_period;
-  const double sin_h = bounded_sinpi(out.r * inv_period);
   const double sin_d = bounded_sinpi(d);
   const double sin_half_d = bounded_sinpi(d * 0.5);
-  out.Sx = 2 * sin_h * sin_h;
   const double cos_d = multiply_add(-2 * sin_half_d, sin_half_d, 1.0);
+  out.D = 2 * sin_d * multiply_add(sin_a, cos_d, -cos_a * sin_d);
   if constexpr (with_cosine) {
-    const double w = (b1 - 2 * out.r) * inv_period;
-    out.Cx = w <= 0.25 ? bounded_sinpi(w) : 1 - out.Sx;
+    out.Cx = cos_a + out.D;
+    out.Sx = 1 - out.Cx;
   } else {
+    const double sin_h = bounded_sinpi(out.r * inv_period);
+    out.Sx = 2 * sin_h * sin_h;
     out.Cx = 0;
   }
-  out.D = 2 * sin_d * multiply_add(sin_a, cos_d, -cos_a * sin_d);
   return out;
 }
 
