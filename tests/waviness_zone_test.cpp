@@ -1,6 +1,7 @@
 // WavinessZone (wavecontact/waviness_zone.hpp) against the free functions of waviness.hpp:
-// the same values, bit for bit up to b1/2 and within the atoms' rounding beyond, on every
-// array-kernel path; the same refusals; and one zone shared by threads.
+// the same values, bit for bit up to b1/2, and beyond it bit for bit with the atoms per call
+// and within their rounding with the tables kept, on every array-kernel path; the same
+// refusals; and one zone shared by threads.
 #define BOOST_TEST_MODULE waviness_zone
 #include <boost/test/unit_test.hpp>
 
@@ -84,9 +85,39 @@ BOOST_AUTO_TEST_CASE(printed_form_beyond_half_arrays_give_the_points_values) {
   }
 }
 
-// Beyond b1/2 a zone reads the Cauchy part's atoms from panels it builds on first use: its
-// values are the same from a point or an array, whichever came first, and within the atoms'
-// rounding of the free functions' (which tabulate per array call, or not at all for a point).
+// Beyond b1/2, a zone that takes the atoms per call (AtomTables::per_call) gives the free
+// functions' values bit for bit, from a point and from an array.
+BOOST_AUTO_TEST_CASE(zone_with_atoms_per_call_gives_the_free_functions_values_bit_for_bit) {
+  std::mt19937_64 random(13);
+  int compared = 0;
+  for (double m : {0.0, 0.2, 1.0, 10.0, 1e4}) {
+    const WavinessParams p{0.7, 3.0, m, 2e5};
+    for (double ratio : {0.5 + 1e-9, 0.71, 0.98}) {
+      const double a = ratio * p.b1;
+      const WavinessZone zone(p, a, Form::exact, AtomTables::per_call);
+      BOOST_TEST((zone.atom_tables() == AtomTables::per_call));
+      const Eigen::ArrayXd x = points_around(p, a, random);
+      // Twice: an array call must not leave tables that a later call reads.
+      const Eigen::ArrayXd free_array = pressure(p, a, x), zone_array = zone.pressure(x), again = zone.pressure(x);
+      for (Eigen::Index i = 0; i < x.size(); ++i) {
+        const double free_scalar = pressure(p, a, x[i]), zone_scalar = zone.pressure(x[i]);
+        BOOST_TEST(same_bits(zone_scalar, free_scalar), "m = " << m << ", a/b1 = " << ratio << ", x = " << x[i]
+                                                               << ": zone " << zone_scalar << ", free " << free_scalar);
+        BOOST_TEST(same_bits(zone_array[i], free_array[i]),
+                   "array, m = " << m << ", a/b1 = " << ratio << ", x = " << x[i] << ": zone " << zone_array[i]
+                                 << ", free " << free_array[i]);
+        BOOST_TEST(same_bits(again[i], free_array[i]));
+        ++compared;
+      }
+    }
+  }
+  BOOST_TEST(compared == 5 * 3 * 203);
+}
+
+// Beyond b1/2 a zone that keeps its tables (AtomTables::kept, the default) reads the Cauchy
+// part's atoms from panels it builds on first use: its values are the same from a point or an
+// array, whichever came first, and within the atoms' rounding of the free functions' (which
+// tabulate per array call, or not at all for a point).
 BOOST_AUTO_TEST_CASE(zone_beyond_half_is_a_function_of_x_near_the_free_functions) {
   std::mt19937_64 random(11);
   double largest_difference = 0;  // in eps of the zone's largest |p|

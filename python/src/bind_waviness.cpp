@@ -76,16 +76,21 @@ void bind_waviness(py::module_& m) {
       "Contact pressure p(x) [pressure] of one zone of half-width a, 0 < a < b1, at x (a float, "
       "or an array of any shape: the result has its shape). x is taken modulo 2 b1; 0 off the "
       "zone. Arrays use the vectorised kernel (AVX2) without the GIL.");
+  py::enum_<AtomTables>(m, "AtomTables",
+                        "Beyond a = b1/2, how a WavinessZone takes the atoms of the points near the other "
+                        "branch's pole.")
+      .value("kept", AtomTables::kept,
+             "tabulated, a panel the first time a point falls into it (some tens of us, once), then about "
+             "0.1 us a point; the same values from a point or an array, within a few eps of pressure()'s")
+      .value("per_call", AtomTables::per_call,
+             "as pressure() takes them (about 2 us a point), and so its values bit for bit")
+      .def(py::init(&checked_enum<AtomTables, 2>), "value"_a, py::prepend());
   py::class_<WavinessZone>(m, "WavinessZone",
                            "One zone of half-width a, prepared once: pressure(x) then costs only the point's "
-                           "own terms (what depends on params and a alone, beyond b1/2 the closed forms' atoms, "
-                           "is computed by the constructor). Up to a = b1/2 the values are pressure()'s, bit for bit. "
-                           "Beyond, the zone tabulates the atoms a point needs near the other branch's pole, a "
-                           "panel the first time a point falls into it: a point then costs about 0.1 us, and the "
-                           "values, the same from a point or an array, differ from pressure()'s by the atoms' "
-                           "rounding (a few eps of the largest p).")
-      .def(py::init<const WavinessParams&, double, Form>(), "params"_a, "a"_a, "form"_a = Form::exact,
-           "The zone |x| <= a, 0 < a < b1; ValueError if a or params is invalid.")
+                           "own terms (what depends on params and a alone is computed once). Up to a = b1/2 the "
+                           "values are pressure()'s, bit for bit; beyond, see AtomTables.")
+      .def(py::init<const WavinessParams&, double, Form, AtomTables>(), "params"_a, "a"_a, "form"_a = Form::exact,
+           "tables"_a = AtomTables::kept, "The zone |x| <= a, 0 < a < b1; ValueError if a or params is invalid.")
       .def(
           "pressure",
           [](const WavinessZone& zone, const py::handle& x) {
@@ -99,9 +104,11 @@ void bind_waviness(py::module_& m) {
       .def_property_readonly("params", &WavinessZone::params, "the wave curve")
       .def_property_readonly("a", &WavinessZone::half_width, "the half-width [length]")
       .def_property_readonly("form", &WavinessZone::form, "the closed form evaluated")
+      .def_property_readonly("tables", &WavinessZone::atom_tables, "how it takes the atoms beyond b1/2")
       .def("__repr__", [](const WavinessZone& z) {
         return "WavinessZone(" + repr(z.params()) + ", a=" + std::string(py::repr(py::float_(z.half_width()))) +
-               ", form=" + (z.form() == Form::exact ? "Form.exact" : "Form.paper") + ")";
+               ", form=" + (z.form() == Form::exact ? "Form.exact" : "Form.paper") +
+               ", tables=" + (z.atom_tables() == AtomTables::kept ? "AtomTables.kept" : "AtomTables.per_call") + ")";
       });
   m.def("load", &load, "params"_a, "a"_a, "form"_a = Form::exact,
         "Load per unit length P (eq. 6) carried by one zone of half-width a, 0 < a <= b1.");

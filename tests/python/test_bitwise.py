@@ -49,6 +49,16 @@ def test_zone_gives_the_free_functions_values(m):
 
 
 @pytest.mark.parametrize("m", [0, 2, 10])
+def test_zone_with_atoms_per_call_beyond_half_gives_the_free_functions_values(m):
+    w = wc.WavinessParams(H1=1, b1=10, m=m, E=1)
+    zone = wc.WavinessZone(w, 6.0, tables=wc.AtomTables.per_call)
+    assert zone.tables == wc.AtomTables.per_call
+    assert zone.pressure(X).tobytes() == wc.pressure(w, 6.0, X).tobytes()
+    for x in X[::8]:
+        assert zone.pressure(float(x)).hex() == wc.pressure(w, 6.0, float(x)).hex(), x
+
+
+@pytest.mark.parametrize("m", [0, 2, 10])
 def test_zone_beyond_half_is_a_function_of_x_near_the_free_functions(m):
     # Beyond b1/2 the zone reads the Cauchy atoms from tables it builds as points ask: a point
     # gives the array's bits, and both lie within the atoms' rounding of the free functions.

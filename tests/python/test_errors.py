@@ -72,6 +72,7 @@ def test_wrong_types_are_type_errors_not_crashes():
 @pytest.mark.parametrize("call, message", [
     (lambda: wc.Form(5), "5 is not a value of this enum"),
     (lambda: wc.Isa(-1), "-1 is not a value of this enum"),
+    (lambda: wc.AtomTables(2), "2 is not a value of this enum"),
     (lambda: wc.pressure(W, 4.0, np.array([1 + 2j])), "not an array of dtype complex128"),
     (lambda: wc.pressure(W, 4.0, 1j), "not complex"),
     (lambda: wc.pressure(W, 4.0, 10**400), "beyond the range of a double"),
@@ -88,6 +89,7 @@ def test_edge_inputs_are_value_errors(call, message):
 
 def test_enum_values_still_construct():
     assert wc.Form(1) == wc.Form.paper and wc.Form(0) == wc.Form.exact
+    assert wc.AtomTables(1) == wc.AtomTables.per_call and wc.AtomTables(0) == wc.AtomTables.kept
 
 
 def test_gap_of_any_x_is_reduced_exactly():

@@ -40,7 +40,8 @@ double sine_of(const ZoneAngles& zone) { return std::sqrt(zone.Sa * (1 + zone.Ca
 
 // Up to a = b1/2 (the kernels' bounded arguments), points and arrays take the array kernels'
 // arithmetic (the same atoms and closed form, compiled for array_kernel_isa()), one point
-// with x reduced to the period exactly first. Beyond, the printed form takes pressure_at.
+// with x reduced to the period exactly first. Beyond, a point takes pressure_at, as the free
+// function does, unless the zone keeps its tables of atoms (AtomTables::kept).
 bool kernels_serve(const WavinessParams& p, double a) { return a <= p.b1 / 2; }
 double kernel_point(const detail::SimdWavinessZone& zone, Form form, double x) {
   return detail::simd_point_pressure(zone, form, std::fabs(x) <= zone.b1 ? x : reduce_to_period(x, zone.b1));
@@ -48,18 +49,18 @@ double kernel_point(const detail::SimdWavinessZone& zone, Form form, double x) {
 
 }  // namespace
 
-WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form)
-    : WavinessZone("wavecontact::WavinessZone", params, a, form, true) {}
+WavinessZone::WavinessZone(const WavinessParams& params, double a, Form form, AtomTables tables)
+    : WavinessZone("wavecontact::WavinessZone", params, a, form, tables) {}
 
-WavinessZone::WavinessZone(const char* function, const WavinessParams& params, double a, Form form, bool kept)
-    : params_(params), a_(a), form_(form) {
+WavinessZone::WavinessZone(const char* function, const WavinessParams& params, double a, Form form, AtomTables tables)
+    : params_(params), a_(a), form_(form), tables_(tables) {
   validate(params, function);
   detail::require_waviness_half_width(function, params, a, form);
   angles_ = zone_angles(a, params.b1);
   sin_a_ = sine_of(angles_);
   kernels_ = kernels_serve(params, a);
-  if (form == Form::exact && a > params.b1 / 2)
-    beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, a, angles_, kept);
+  if (form == Form::exact && a > params.b1 / 2 && tables == AtomTables::kept)
+    beyond_half_ = std::make_shared<detail::BeyondHalfZone>(params, a, angles_, true);
 }
 
 double WavinessZone::pressure(double x) const {
@@ -85,9 +86,13 @@ void WavinessZone::fill(const char* function, const Eigen::Ref<const Eigen::Arra
   const auto count = static_cast<std::size_t>(x.size());
   const double* xs = x.data();
   double* ps = p.data();
-  if (beyond_half_) {
+  if (form_ == Form::exact && !kernels_) {  // beyond b1/2: tables kept, or the call's own
     detail::require_finite_points(function, x);
-    beyond_half_->pressures(xs, ps, count, parallel_points_costly);
+    if (beyond_half_) {
+      beyond_half_->pressures(xs, ps, count, parallel_points_costly);
+    } else {
+      detail::BeyondHalfZone(params_, a_, angles_, false).pressures(xs, ps, count, parallel_points_costly);
+    }
     return;
   }
   const detail::SimdWavinessZone zone = simd_zone(params_, a_, angles_, sin_a_);
@@ -124,7 +129,7 @@ double pressure(const WavinessParams& params, double a, double x, Form form) {
 void pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x,
               Eigen::Ref<Eigen::ArrayXd> p, Form form) {
   constexpr const char* function = "wavecontact::pressure";
-  WavinessZone(function, params, a, form, false).fill(function, x, p);
+  WavinessZone(function, params, a, form, AtomTables::per_call).fill(function, x, p);
 }
 
 Eigen::ArrayXd pressure(const WavinessParams& params, double a, const Eigen::Ref<const Eigen::ArrayXd>& x, Form form) {
