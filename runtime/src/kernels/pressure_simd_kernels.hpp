@@ -1,6 +1,7 @@
 // The array kernels' bodies, included by each per-ISA unit (pressure_simd_avx2.cpp,
-// pressure_simd_avx512.cpp) and compiled there with its flags: plain loops over blocks of
-// points that the compiler vectorises for that ISA. Everything here has internal linkage,
+// pressure_simd_avx512.cpp, pressure_simd_scalar.cpp) and compiled there with its flags: plain
+// loops over blocks of points that the compiler vectorises for that ISA (but in the scalar
+// unit, which it keeps scalar). Everything here has internal linkage,
 // so no out-of-line copy compiled for one ISA can serve another unit
 // (tests/simd_units_export_entry_points_only.cmake checks the symbols).
 #pragma once
