@@ -1,9 +1,6 @@
 #include "chebyshev.hpp"
 
 #include <algorithm>
-#include <complex>
-
-#include <unsupported/Eigen/FFT>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -11,14 +8,16 @@
 
 #include <boost/math/constants/constants.hpp>
 
+#include "cosine_transform.hpp"
+
 namespace wavecontact::detail::chebyshev {
 
 namespace {
 
 using boost::math::double_constants::pi;
 
-// Up to this many nodes the transform's cosines are tabulated; beyond, it is a fast Fourier
-// transform of the values extended evenly to 2 M points (an M^2 table would reach 134 MB at
+// Up to this many nodes the transform's cosines are tabulated; beyond, it is FFTW's DCT-II,
+// planned once per M and thread (an M^2 table would reach 134 MB at
 // M = 4096, and the three-term recurrence of T_j loses j ulps: the zone's own operator then
 // multiplies coefficient j by j, a first-kind equation's amplification of noise).
 constexpr int tabulated = 128;
@@ -63,25 +62,47 @@ double clenshaw(const double* c, std::size_t count, double t, double a, double b
   return c[0] + b1 * (a * t + b) - b2;
 }
 
+// The same recurrence at `points` values of t, eight side by side: the lanes are independent
+// chains (one point's recurrence waits on each step), with the scalar one's operations.
+void clenshaw(const double* c, std::size_t count, const double* t, double* out, std::size_t points, double a,
+              double b) {
+  constexpr std::size_t lanes = 8;
+  for (std::size_t first = 0; first < points; first += lanes) {
+    const std::size_t used = std::min(lanes, points - first);
+    double tt[lanes] = {}, b1[lanes] = {}, b2[lanes] = {};
+    std::copy(t + first, t + first + used, tt);
+    if (count == 0) {
+      std::fill(out + first, out + first + used, 0.0);
+      continue;
+    }
+    for (std::size_t j = count; j-- > 1;) {
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const double next = c[j] + 2 * tt[l] * b1[l] - b2[l];
+        b2[l] = b1[l], b1[l] = next;
+      }
+    }
+    for (std::size_t l = 0; l < used; ++l) out[first + l] = c[0] + b1[l] * (a * tt[l] + b) - b2[l];
+  }
+}
+
 }  // namespace
 
 const std::vector<double>& nodes(int M) { return table(M).nodes; }
 
 void coefficients(const double* values, int M, double* out) {
-  const Table& t = table(M);
   if (M > tabulated) {
-    // y = (v_0 .. v_{M-1}, v_{M-1} .. v_0): Y_j = 2 e^{i pi j/(2M)} sum_i v_i cos(pi j (i + 1/2)/M).
-    thread_local Eigen::FFT<double> fft;
-    std::vector<double> y(static_cast<std::size_t>(2 * M));
-    for (int i = 0; i < M; ++i) y[static_cast<std::size_t>(i)] = y[static_cast<std::size_t>(2 * M - 1 - i)] = values[i];
-    std::vector<std::complex<double>> Y;
-    fft.fwd(Y, y);
-    for (int j = 0; j < M; ++j) {
-      const std::complex<double> phase = std::polar(1.0, -pi * j / (2.0 * M));
-      out[j] = (phase * Y[static_cast<std::size_t>(j)]).real() / 2 * (j == 0 ? 1.0 : 2.0) / M;
-    }
+    // y_j = 2 sum_i v_i cos(pi j (i + 1/2) / M) = 2 sum_i v_i T_j(tau_i).
+    thread_local std::map<int, std::unique_ptr<CosineTransform>> transforms;
+    std::unique_ptr<CosineTransform>& transform = transforms[M];
+    if (!transform)
+      transform = std::make_unique<CosineTransform>(static_cast<std::size_t>(M), CosineTransform::Kind::dct2);
+    std::vector<double>& y = transform->data();
+    std::copy(values, values + M, y.begin());
+    transform->apply();
+    for (int j = 0; j < M; ++j) out[j] = y[static_cast<std::size_t>(j)] / (j == 0 ? 2.0 * M : static_cast<double>(M));
     return;
   }
+  const Table& t = table(M);
   for (int j = 0; j < M; ++j) {
     const double* row = t.cosines.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(M);
     double sum = 0;
@@ -113,8 +134,10 @@ std::vector<double> extrema_coefficients(const std::vector<double>& values) {
 }
 
 double sum_t(const double* c, std::size_t count, double t) { return clenshaw(c, count, t, 1, 0); }
-double sum_u(const double* c, std::size_t count, double t) { return clenshaw(c, count, t, 2, 0); }
-double sum_v(const double* c, std::size_t count, double t) { return clenshaw(c, count, t, 2, -1); }
-double sum_w(const double* c, std::size_t count, double t) { return clenshaw(c, count, t, 2, 1); }
+
+void sums(Kind kind, const double* c, std::size_t count, const double* t, double* out, std::size_t points) {
+  const double a = kind == Kind::t ? 1 : 2, b = kind == Kind::v ? -1 : kind == Kind::w ? 1 : 0;
+  clenshaw(c, count, t, out, points, a, b);
+}
 
 }  // namespace wavecontact::detail::chebyshev

@@ -22,9 +22,9 @@ std::vector<double> extrema_coefficients(const std::vector<double>& values);
 
 // sum_j c_j T_j(t), by Clenshaw's recurrence.
 double sum_t(const double* c, std::size_t count, double t);
-// sum_j c_j U_j(t) (second kind), V_j (third: V_1 = 2t - 1), W_j (fourth: W_1 = 2t + 1).
-double sum_u(const double* c, std::size_t count, double t);
-double sum_v(const double* c, std::size_t count, double t);
-double sum_w(const double* c, std::size_t count, double t);
+// sum_j c_j P_j(t) at t[0 .. points) into out, P_j of the first kind T_j, the second U_j, the
+// third V_j (V_1 = 2t - 1) or the fourth W_j (W_1 = 2t + 1), the points' recurrences side by side.
+enum class Kind { t, u, v, w };
+void sums(Kind kind, const double* c, std::size_t count, const double* t, double* out, std::size_t points);
 
 }  // namespace wavecontact::detail::chebyshev

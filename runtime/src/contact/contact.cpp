@@ -36,11 +36,10 @@ void require_options(const char* function, const SolverOptions& options) {
 // The largest pressure on [lo, hi] (x^): every local maximum of a Chebyshev-spread sampling,
 // refined by Brent's method between its neighbours.
 std::pair<double, double> largest_pressure(const detail::ContactSolution& s, double lo, double hi, int count) {
-  std::vector<double> xs, ps;
-  for (int i = 0; i <= count; ++i) {
+  std::vector<double> xs, ps(static_cast<std::size_t>(count) + 1);
+  for (int i = 0; i <= count; ++i)
     xs.push_back(std::clamp((lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count), lo, hi));
-    ps.push_back(s.pressure(xs.back()));
-  }
+  s.pressures(xs.data(), ps.data(), xs.size());
   std::pair<double, double> best{-std::numeric_limits<double>::infinity(), lo};
   for (int i = 0; i <= count; ++i) {
     const std::size_t u = static_cast<std::size_t>(i);

@@ -15,10 +15,11 @@ std::mutex& planner_mutex() {  // FFTW's planner is not reentrant; its plans' ex
 
 }  // namespace
 
-CosineTransform::CosineTransform(std::size_t points) : data_(points) {
+CosineTransform::CosineTransform(std::size_t points, Kind kind) : data_(points) {
   const std::lock_guard<std::mutex> lock(planner_mutex());
-  plan_ = fftw_plan_r2r_1d(static_cast<int>(points), data_.data(), data_.data(), FFTW_REDFT00, FFTW_ESTIMATE);
-  if (plan_ == nullptr) throw std::runtime_error("wavecontact: FFTW could not plan a DCT-I");
+  plan_ = fftw_plan_r2r_1d(static_cast<int>(points), data_.data(), data_.data(),
+                           kind == Kind::dct1 ? FFTW_REDFT00 : FFTW_REDFT10, FFTW_ESTIMATE);
+  if (plan_ == nullptr) throw std::runtime_error("wavecontact: FFTW could not plan a cosine transform");
 }
 
 CosineTransform::~CosineTransform() {

@@ -1,8 +1,10 @@
-// The DCT-I (FFTW's REDFT00) of N + 1 points, in place:
+// FFTW's cosine transforms, in place. The DCT-I (REDFT00) of N + 1 points,
 //   y_k = x_0 + (-1)^k x_N + 2 sum_{j=1}^{N-1} x_j cos(pi j k / N),
 // the discrete Fourier transform of an even sequence of period 2N held as its half period,
-// and its own inverse up to the factor 2N. The contact solver's grid guess and its cosine
-// series on uniform grids take it.
+// and its own inverse up to the factor 2N: the contact solver's grid guess and its cosine
+// series on uniform grids take it. The DCT-II (REDFT10) of N points,
+//   y_k = 2 sum_{j=0}^{N-1} x_j cos(pi k (j + 1/2) / N),
+// takes values at Chebyshev's nodes of the first kind to their series (chebyshev.hpp).
 #pragma once
 
 #include <cstddef>
@@ -14,7 +16,8 @@ namespace wavecontact::detail {
 
 class CosineTransform {
  public:
-  explicit CosineTransform(std::size_t points);  // N + 1 >= 2
+  enum class Kind { dct1, dct2 };
+  explicit CosineTransform(std::size_t points, Kind kind = Kind::dct1);  // dct1: N + 1 >= 2
   ~CosineTransform();
   CosineTransform(const CosineTransform&) = delete;
   CosineTransform& operator=(const CosineTransform&) = delete;

@@ -32,10 +32,12 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
     const double margin = 0.01 * (g.b - g.a);
     const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
     const int count = a.pressure_samples(k);
-    for (int i = 0; i <= count; ++i) {
-      const double x = (lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count);
-      worst = std::max(worst, std::fabs(a.pressure(x) - b.pressure(x)) / highest);
-    }
+    std::vector<double> xs(static_cast<std::size_t>(count) + 1), pa(xs.size()), pb(xs.size());
+    for (int i = 0; i <= count; ++i)
+      xs[static_cast<std::size_t>(i)] = (lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count);
+    a.pressures(xs.data(), pa.data(), xs.size());
+    b.pressures(xs.data(), pb.data(), xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i) worst = std::max(worst, std::fabs(pa[i] - pb[i]) / highest);
     difference[k] = worst;
   });
   return difference;

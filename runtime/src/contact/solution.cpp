@@ -10,7 +10,10 @@ namespace wavecontact::detail {
 
 ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration)
     : surface_(std::move(surface)), configuration_(std::move(configuration)), fields_(*surface_, configuration_) {
-  for (const ZoneUnknowns& z : configuration_.zones) ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
+  for (const ZoneUnknowns& z : configuration_.zones) {
+    ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
+    pressure_series_.push_back(bounded_pressure_series(z.geometry, z.d.data(), static_cast<int>(z.d.size())));
+  }
 }
 
 bool ContactSolution::full_contact() const { return zone_count() == 1 && zone(0).top() && zone(0).valley(); }
@@ -25,13 +28,33 @@ std::size_t ContactSolution::zone_at(double x) const {
 }
 
 double ContactSolution::pressure(double x) const {
-  x = std::fabs(x);
-  const std::size_t k = zone_at(x);
-  if (k == zone_count()) return 0;
-  const ZoneUnknowns& z = configuration_.zones[k];
-  if (x == z.geometry.a && !z.geometry.top()) return 0;
-  if (x == z.geometry.b && !z.geometry.valley()) return 0;
-  return zone_pressure(z.geometry, z.d.data(), static_cast<int>(z.d.size()), x) + kink_pressure(k, x);
+  double p = 0;
+  pressures(&x, &p, 1);
+  return p;
+}
+
+void ContactSolution::pressures(const double* xs, double* ps, std::size_t count) const {
+  // Each run of points in one zone takes one batch of the zone's sums.
+  std::vector<double> run;
+  for (std::size_t i = 0; i < count;) {
+    const std::size_t k = zone_at(std::fabs(xs[i]));
+    std::size_t end = i + 1;
+    while (end < count && zone_at(std::fabs(xs[end])) == k) ++end;
+    if (k == zone_count()) {
+      std::fill(ps + i, ps + end, 0.0);
+    } else {
+      run.resize(end - i);
+      for (std::size_t j = i; j < end; ++j) run[j - i] = std::fabs(xs[j]);
+      const ZoneGeometry& g = zone(k);
+      zone_pressures(g, pressure_series_[k], run.data(), ps + i, run.size());
+      for (std::size_t j = i; j < end; ++j) {
+        const double x = run[j - i];
+        const bool free_end = (x == g.a && !g.top()) || (x == g.b && !g.valley());
+        ps[j] = free_end ? 0.0 : ps[j] + kink_pressure(k, x);
+      }
+    }
+    i = end;
+  }
 }
 
 double ContactSolution::kink_pressure(std::size_t k, double x) const {

@@ -24,6 +24,8 @@ class ContactSolution {
   std::size_t zone_at(double x) const;
   // p^ at x^ (any sign: |x^| <= pi), 0 off the zones.
   double pressure(double x) const;
+  // The same at xs[0 .. count) into ps: a run of points in one zone is summed side by side.
+  void pressures(const double* xs, double* ps, std::size_t count) const;
   // The part of p^ at x^ in zone k that its kink correction carries (0 without one).
   double kink_pressure(std::size_t k, double x) const;
   // The gap (2/E*)(Psi(x^) - C) - (y(x^) - y_top) off the zones, 0 on them.
@@ -45,7 +47,8 @@ class ContactSolution {
   std::shared_ptr<const SurfaceModel> surface_;
   Configuration configuration_;
   ZoneFields fields_;
-  std::vector<double> ends_;  // a_0, b_0, a_1, ...: for zone_at
+  std::vector<double> ends_;                          // a_0, b_0, a_1, ...: for zone_at
+  std::vector<std::vector<double>> pressure_series_;  // of each zone: bounded_pressure_series
 };
 
 }  // namespace wavecontact::detail

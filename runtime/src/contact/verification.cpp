@@ -37,12 +37,13 @@ namespace {
 void sample_pressure(const ContactSolution& s, std::size_t k, std::vector<double>& xs, std::vector<double>& ps) {
   const ZoneGeometry& g = s.zone(k);
   const int count = s.pressure_samples(k);
-  xs.clear(), ps.clear();
+  xs.clear();
   for (int i = 0; i <= count; ++i) {
     const double x = (g.a + g.b) / 2 - (g.b - g.a) / 2 * std::cos(pi * i / count);
     xs.push_back(std::clamp(x, g.a, g.b));
-    ps.push_back(s.pressure(xs.back()));
   }
+  ps.resize(xs.size());
+  s.pressures(xs.data(), ps.data(), xs.size());
 }
 
 }  // namespace

@@ -56,33 +56,46 @@ void own_potential(const ZoneGeometry& g, const double* d, int count, double* o)
   for (int j = 1; j < count; ++j) o[j] = g.h * d[j] / j;
 }
 
-double zone_pressure(const ZoneGeometry& g, const double* d, int count, double x) {
-  const HalfAngle p = HalfAngle::of(x);
-  const double one_minus = -g.z_minus_1(p), one_plus = g.z_plus_1(p);  // 1 - tau, 1 + tau
-  const double tau = (one_plus - one_minus) / 2;
-  if (g.top() && g.valley()) return chebyshev::sum_t(d, static_cast<std::size_t>(count), std::cos(x));
-  std::vector<double> c(static_cast<std::size_t>(count), 0.0);
+std::vector<double> bounded_pressure_series(const ZoneGeometry& g, const double* d, int count) {
+  if (g.top() && g.valley()) return std::vector<double>(d, d + count);
+  std::vector<double> c(static_cast<std::size_t>(count - (g.top() || g.valley() ? 1 : 2)), 0.0);
   if (g.top()) {
-    // sum d_j T_j = (1 + tau) sum g_j V_j, (1 + tau) V_j = T_j + T_{j+1}: d_k = g_k + g_{k-1};
-    // sin x / sqrt(1 - tau) = sqrt(2 h) cos(x/2).
-    for (int k = 0; k + 1 < count; ++k)
-      c[static_cast<std::size_t>(k)] = d[k] - (k > 0 ? c[static_cast<std::size_t>(k - 1)] : 0);
-    return std::sqrt(2 * g.h) * p.cos_half * std::sqrt(one_plus) *
-           chebyshev::sum_v(c.data(), static_cast<std::size_t>(count - 1), tau);
+    // sum d_j T_j = (1 + tau) sum g_j V_j, (1 + tau) V_j = T_j + T_{j+1}: d_k = g_k + g_{k-1}.
+    for (std::size_t k = 0; k < c.size(); ++k) c[k] = d[k] - (k > 0 ? c[k - 1] : 0);
+  } else if (g.valley()) {
+    // (1 - tau) W_j = T_j - T_{j+1}: d_k = g_k - g_{k-1}.
+    for (std::size_t k = 0; k < c.size(); ++k) c[k] = d[k] + (k > 0 ? c[k - 1] : 0);
+  } else {
+    // (1 - tau^2) U_j = (T_j - T_{j+2}) / 2: d_k = (c_k - c_{k-2}) / 2.
+    for (std::size_t k = 0; k < c.size(); ++k) c[k] = 2 * d[k] + (k >= 2 ? c[k - 2] : 0);
   }
-  if (g.valley()) {
-    // (1 - tau) W_j = T_j - T_{j+1}: d_k = g_k - g_{k-1}; sin x / sqrt(1 + tau) = sqrt(2 h) sin(x/2).
-    for (int k = 0; k + 1 < count; ++k)
-      c[static_cast<std::size_t>(k)] = d[k] + (k > 0 ? c[static_cast<std::size_t>(k - 1)] : 0);
-    return std::sqrt(2 * g.h) * p.sin_half * std::sqrt(one_minus) *
-           chebyshev::sum_w(c.data(), static_cast<std::size_t>(count - 1), tau);
+  return c;
+}
+
+void zone_pressures(const ZoneGeometry& g, const std::vector<double>& series, const double* x, double* p,
+                    std::size_t points) {
+  // p = factor * sum_j c_j P_j(tau), P = V at the top, W at the valley, U between;
+  // sin x / sqrt(1 - tau) = sqrt(2 h) cos(x/2), sin x / sqrt(1 + tau) = sqrt(2 h) sin(x/2).
+  std::vector<double> tau(points), factor(points);
+  const bool full = g.top() && g.valley();
+  for (std::size_t i = 0; i < points; ++i) {
+    if (full) {
+      tau[i] = std::cos(x[i]), factor[i] = 1;
+      continue;
+    }
+    const HalfAngle h = HalfAngle::of(x[i]);
+    const double one_minus = -g.z_minus_1(h), one_plus = g.z_plus_1(h);  // 1 - tau, 1 + tau
+    tau[i] = (one_plus - one_minus) / 2;
+    factor[i] = g.top()      ? std::sqrt(2 * g.h) * h.cos_half * std::sqrt(one_plus)
+                : g.valley() ? std::sqrt(2 * g.h) * h.sin_half * std::sqrt(one_minus)
+                             : std::sin(x[i]) * std::sqrt(one_minus * one_plus);
   }
-  // (1 - tau^2) U_j = (T_j - T_{j+2}) / 2: d_k = (c_k - c_{k-2}) / 2.
-  for (int k = 0; k + 2 < count; ++k) {
-    c[static_cast<std::size_t>(k)] = 2 * d[k] + (k >= 2 ? c[static_cast<std::size_t>(k - 2)] : 0);
-  }
-  return std::sin(x) * std::sqrt(one_minus * one_plus) *
-         chebyshev::sum_u(c.data(), static_cast<std::size_t>(count - 2), tau);
+  const chebyshev::Kind kind = full         ? chebyshev::Kind::t
+                               : g.top()    ? chebyshev::Kind::v
+                               : g.valley() ? chebyshev::Kind::w
+                                            : chebyshev::Kind::u;
+  chebyshev::sums(kind, series.data(), series.size(), tau.data(), p, points);
+  for (std::size_t i = 0; i < points; ++i) p[i] *= factor[i];
 }
 
 }  // namespace wavecontact::detail

@@ -31,9 +31,14 @@ double self_logarithm(const ZoneGeometry& g);
 // The coefficients of the zone's own potential: o_0 = h log(2/h) d_0, o_j = h d_j / j.
 void own_potential(const ZoneGeometry& g, const double* d, int count, double* o);
 
-// The pressure (normalised: sin x^ q) at angle x in the zone, from coefficients whose end
-// conditions hold: the bounded form (the root factored out at each bounded end), so that it
-// keeps its digits as x nears an end.
-double zone_pressure(const ZoneGeometry& g, const double* d, int count, double x);
+// The pressure in its bounded form, so that it keeps its digits as x nears an end: the root
+// factored out at each bounded end, the coefficients d[0 .. count) (their end conditions met)
+// recast in the basis that remains, V_j at the top, W_j at the valley, U_j between (T_j for a
+// zone over the whole half period).
+std::vector<double> bounded_pressure_series(const ZoneGeometry& g, const double* d, int count);
+// The pressure (normalised: sin x^ q) at the angles x[0 .. points) in the zone, from that
+// series, into p.
+void zone_pressures(const ZoneGeometry& g, const std::vector<double>& series, const double* x, double* p,
+                    std::size_t points);
 
 }  // namespace wavecontact::detail
