@@ -263,6 +263,30 @@ BOOST_AUTO_TEST_CASE(sweep_equals_single_solves) {
   }
 }
 
+// A sweep of small steps starts each load from the contacts at the loads before it
+// (extrapolated in the load) and settles the zones that open or merge on the way: 40 loads
+// of a rough surface whose zones change in number along the line, each a contact and each
+// the single solve's.
+BOOST_AUTO_TEST_CASE(fine_sweep_equals_single_solves) {
+  const Surface s(fig7(0, 0.02, 32));
+  std::vector<double> loads;
+  for (int i = 0; i < 40; ++i) loads.push_back((0.2 + 0.02 * i) * pi);
+  const std::vector<Contact> sweep = solve_contact(s, loads);
+  int fewest = 1000, most = 0;
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    const std::string what = "n = 32, pa/p* = " + std::to_string(loads[i] / pi);
+    const Contact single = solve_contact(s, loads[i]);
+    BOOST_TEST_REQUIRE(single.zones_per_period() == sweep[i].zones_per_period(), what);
+    fewest = std::min(fewest, single.zones_per_period()), most = std::max(most, single.zones_per_period());
+    for (std::size_t k = 0; k < single.zones().size(); ++k) {
+      BOOST_TEST(std::fabs(single.zones()[k].x_end - sweep[i].zones()[k].x_end) < 1e-10 * 10, what);
+    }
+    BOOST_TEST(single.pressure(0) == sweep[i].pressure(0), tt::tolerance(1e-10));
+    check_contact(sweep[i], 10, what);
+  }
+  BOOST_TEST(most >= fewest + 4);  // zones opened and merged along the sweep
+}
+
 // Geometric convergence in the nodes per zone, multi-zone cases on smooth profiles: the
 // error of the zone ends and of p against an adaptive solve at 1e-12 falls by a factor 10
 // at least per 4 more nodes until rounding, and the error estimate bounds the error. p is

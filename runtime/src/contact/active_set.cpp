@@ -33,16 +33,21 @@ constexpr double shortest_piece = 0.02;  // a shorter piece is dropped
 // Chebyshev series converge like exp(-2 N sqrt(g / width)); coarser, Newton's method can
 // stall as two zones nearly touch. Asked for only where it did (a zone keeps its nodes
 // through the later loads of a sweep). Whether any zone grew.
+std::size_t width_nodes(const ZoneUnknowns& z, const SurfaceModel& surface) {
+  const double halves = (z.geometry.b - z.geometry.a) / surface.resolution;
+  std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
+  const double r = KinkCorrection::radius_for(surface, z.geometry);
+  if (r > 0)
+    needed = std::max(needed,
+                      static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
+  return needed;
+}
+
 bool fit_nodes(Configuration& c, const SurfaceModel& surface, bool near_neighbours = false) {
   bool grown = false;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
     ZoneUnknowns& z = c.zones[k];
-    const double halves = (z.geometry.b - z.geometry.a) / surface.resolution;
-    std::size_t needed = static_cast<std::size_t>(working_nodes + 8 * std::ceil(halves / 2));
-    const double r = KinkCorrection::radius_for(surface, z.geometry);
-    if (r > 0)
-      needed = std::max(needed,
-                        static_cast<std::size_t>(8 * std::ceil((std::cos(z.geometry.a) - std::cos(z.geometry.b)) / r)));
+    std::size_t needed = width_nodes(z, surface);
     if (near_neighbours) {
       const double before = k == 0 ? 2 * z.geometry.a : z.geometry.a - c.zones[k - 1].geometry.b;
       const double after = k + 1 == c.zones.size() ? 2 * (pi - z.geometry.b) : c.zones[k + 1].geometry.a - z.geometry.b;
@@ -153,6 +158,40 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double re
 }
 
 }  // namespace
+
+Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before) {
+  Configuration c = last.contact;
+  // Two contacts of the same zones and nodes: each end, coefficient and C linear in the load.
+  const auto alike = [&](const Configuration& a, const Configuration& b) {
+    if (a.zones.size() != b.zones.size()) return false;
+    for (std::size_t k = 0; k < a.zones.size(); ++k) {
+      if (a.zones[k].d.size() != b.zones[k].d.size() || a.zones[k].geometry.top() != b.zones[k].geometry.top() ||
+          a.zones[k].geometry.valley() != b.zones[k].geometry.valley())
+        return false;
+    }
+    return true;
+  };
+  if (before && before->P != last.P && alike(before->contact, last.contact)) {
+    const double t = (P - last.P) / (last.P - before->P);
+    for (std::size_t k = 0; k < c.zones.size(); ++k) {
+      const ZoneUnknowns& b = before->contact.zones[k];
+      ZoneUnknowns& z = c.zones[k];
+      const double a = z.geometry.top() ? 0.0 : z.geometry.a + t * (z.geometry.a - b.geometry.a);
+      const double e = z.geometry.valley() ? pi : z.geometry.b + t * (z.geometry.b - b.geometry.b);
+      if (!(a < e)) return nearby_start(surface, P, last, nullptr);
+      z.geometry = ZoneGeometry(a, e);
+      for (std::size_t j = 0; j < z.d.size(); ++j) z.d[j] += t * (z.d[j] - b.d[j]);
+    }
+    for (std::size_t k = 0; k + 1 < c.zones.size(); ++k) {
+      if (!(c.zones[k].geometry.b < c.zones[k + 1].geometry.a)) return nearby_start(surface, P, last, nullptr);
+    }
+    c.C += t * (last.contact.C - before->contact.C);
+  }
+  for (ZoneUnknowns& z : c.zones) {
+    z.d.resize(std::min(z.d.size(), std::min<std::size_t>(most_working_nodes, width_nodes(z, surface))));
+  }
+  return c;
+}
 
 double coefficient_tail(const std::vector<double>& d) {
   double magnitude = 0;

@@ -34,6 +34,17 @@ inline constexpr int most_nodes = 4096;
 inline constexpr int most_kinked_nodes = 32768;
 inline constexpr int most_working_nodes = 4096;  // while settling, the zones are what matters
 
+// A guess for settle at the load P from the contacts at the last loads of a sweep: with the
+// contact before it of the same zones and nodes, each end, coefficient and C extrapolated
+// linearly in the load, else the last contact; each zone's series then cut to the nodes its
+// width asks for (those that near neighbours or a kink's window asked for at that load are
+// asked for again where still needed).
+struct LoadContact {
+  double P = 0;
+  Configuration contact;
+};
+Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before);
+
 // The part of a zone's coefficients the last three hold: how far its series is from converged.
 double coefficient_tail(const std::vector<double>& d);
 

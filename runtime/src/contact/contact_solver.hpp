@@ -1,10 +1,11 @@
 // The unique contact of an even periodic surface under a load (the minimiser of a strictly
 // convex energy), at each of several loads (docs/contact.md).
 //
-// At each load: one zone at the top when it is the contact; else the zones of the contact on
-// a uniform grid (grid_seed.hpp) made exact by Newton's method on the zone system with every
-// change of zones it or the verification calls for (active_set.hpp); if that fails, the same
-// from the contact at the previous load, then from a grid twice as fine. The result is refined
+// At each load, in increasing order: from the contacts at the previous loads extrapolated to
+// this one (nearby_start), or at the first load (or if that fails) one zone at the top when
+// it is the contact, else the zones of the contact on a uniform grid (grid_seed.hpp), then
+// a grid twice as fine: made exact by Newton's method on the zone system with every change
+// of zones it or the verification calls for (active_set.hpp). The result is refined
 // (refinement.hpp): nodes until the series converge, an error estimate, the rounding. Full
 // contact's onset is known beforehand (p = P/(2 pi) + p0 in full contact).
 #pragma once
@@ -13,6 +14,7 @@
 #include <optional>
 #include <vector>
 
+#include "active_set.hpp"
 #include "configuration.hpp"
 #include "refinement.hpp"
 #include "surface_model.hpp"
@@ -33,7 +35,7 @@ class ContactSolver {
   std::vector<SolvedContact> solve(const std::vector<double>& loads) const;
 
  private:
-  Configuration settle_at(double P, const Configuration* previous) const;
+  Configuration settle_at(double P, const LoadContact* previous, const LoadContact* before) const;
   std::optional<Configuration> single_zone(double P) const;
   SolvedContact full_contact(double P) const;
   Configuration full_contact_configuration(double P, int nodes) const;
