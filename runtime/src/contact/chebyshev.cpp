@@ -63,26 +63,24 @@ double clenshaw(const double* c, std::size_t count, double t, double a, double b
 }
 
 // The same recurrence at `points` values of t, eight side by side: the lanes are independent
-// chains (one point's recurrence waits on each step), with the scalar one's operations.
+// chains (one point's recurrence waits on each step), with the scalar one's operations; the
+// points short of a full eight one by one.
 void clenshaw(const double* c, std::size_t count, const double* t, double* out, std::size_t points, double a,
               double b) {
   constexpr std::size_t lanes = 8;
-  for (std::size_t first = 0; first < points; first += lanes) {
-    const std::size_t used = std::min(lanes, points - first);
-    double tt[lanes] = {}, b1[lanes] = {}, b2[lanes] = {};
-    std::copy(t + first, t + first + used, tt);
-    if (count == 0) {
-      std::fill(out + first, out + first + used, 0.0);
-      continue;
-    }
+  std::size_t first = 0;
+  for (; first + lanes <= points && count > 0; first += lanes) {
+    double tt[lanes], b1[lanes] = {}, b2[lanes] = {};
+    std::copy(t + first, t + first + lanes, tt);
     for (std::size_t j = count; j-- > 1;) {
       for (std::size_t l = 0; l < lanes; ++l) {
         const double next = c[j] + 2 * tt[l] * b1[l] - b2[l];
         b2[l] = b1[l], b1[l] = next;
       }
     }
-    for (std::size_t l = 0; l < used; ++l) out[first + l] = c[0] + b1[l] * (a * tt[l] + b) - b2[l];
+    for (std::size_t l = 0; l < lanes; ++l) out[first + l] = c[0] + b1[l] * (a * tt[l] + b) - b2[l];
   }
+  for (; first < points; ++first) out[first] = clenshaw(c, count, t[first], a, b);
 }
 
 }  // namespace

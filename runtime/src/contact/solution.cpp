@@ -34,19 +34,20 @@ double ContactSolution::pressure(double x) const {
 }
 
 void ContactSolution::pressures(const double* xs, double* ps, std::size_t count) const {
-  // Each run of points in one zone takes one batch of the zone's sums.
-  std::vector<double> run;
+  // Each run of points in one zone takes one batch of the zone's sums (of at most `chunk`
+  // points, held on the stack: a single point allocates nothing).
+  constexpr std::size_t chunk = 64;
+  double run[chunk];
   for (std::size_t i = 0; i < count;) {
     const std::size_t k = zone_at(std::fabs(xs[i]));
     std::size_t end = i + 1;
-    while (end < count && zone_at(std::fabs(xs[end])) == k) ++end;
+    while (end < count && end - i < chunk && zone_at(std::fabs(xs[end])) == k) ++end;
     if (k == zone_count()) {
       std::fill(ps + i, ps + end, 0.0);
     } else {
-      run.resize(end - i);
       for (std::size_t j = i; j < end; ++j) run[j - i] = std::fabs(xs[j]);
       const ZoneGeometry& g = zone(k);
-      zone_pressures(g, pressure_series_[k], run.data(), ps + i, run.size());
+      zone_pressures(g, pressure_series_[k], run, ps + i, end - i);
       for (std::size_t j = i; j < end; ++j) {
         const double x = run[j - i];
         const bool free_end = (x == g.a && !g.top()) || (x == g.b && !g.valley());

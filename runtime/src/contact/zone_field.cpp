@@ -1,5 +1,6 @@
 #include "zone_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "chebyshev.hpp"
@@ -76,26 +77,32 @@ void zone_pressures(const ZoneGeometry& g, const std::vector<double>& series, co
                     std::size_t points) {
   // p = factor * sum_j c_j P_j(tau), P = V at the top, W at the valley, U between;
   // sin x / sqrt(1 - tau) = sqrt(2 h) cos(x/2), sin x / sqrt(1 + tau) = sqrt(2 h) sin(x/2).
-  std::vector<double> tau(points), factor(points);
+  // In chunks whose tau and factors stay on the stack (a single point allocates nothing).
   const bool full = g.top() && g.valley();
-  for (std::size_t i = 0; i < points; ++i) {
-    if (full) {
-      tau[i] = std::cos(x[i]), factor[i] = 1;
-      continue;
-    }
-    const HalfAngle h = HalfAngle::of(x[i]);
-    const double one_minus = -g.z_minus_1(h), one_plus = g.z_plus_1(h);  // 1 - tau, 1 + tau
-    tau[i] = (one_plus - one_minus) / 2;
-    factor[i] = g.top()      ? std::sqrt(2 * g.h) * h.cos_half * std::sqrt(one_plus)
-                : g.valley() ? std::sqrt(2 * g.h) * h.sin_half * std::sqrt(one_minus)
-                             : std::sin(x[i]) * std::sqrt(one_minus * one_plus);
-  }
   const chebyshev::Kind kind = full         ? chebyshev::Kind::t
                                : g.top()    ? chebyshev::Kind::v
                                : g.valley() ? chebyshev::Kind::w
                                             : chebyshev::Kind::u;
-  chebyshev::sums(kind, series.data(), series.size(), tau.data(), p, points);
-  for (std::size_t i = 0; i < points; ++i) p[i] *= factor[i];
+  constexpr std::size_t chunk = 64;
+  for (std::size_t first = 0; first < points; first += chunk) {
+    const std::size_t count = std::min(chunk, points - first);
+    double tau[chunk], factor[chunk];
+    for (std::size_t i = 0; i < count; ++i) {
+      const double xi = x[first + i];
+      if (full) {
+        tau[i] = std::cos(xi), factor[i] = 1;
+        continue;
+      }
+      const HalfAngle h = HalfAngle::of(xi);
+      const double one_minus = -g.z_minus_1(h), one_plus = g.z_plus_1(h);  // 1 - tau, 1 + tau
+      tau[i] = (one_plus - one_minus) / 2;
+      factor[i] = g.top()      ? std::sqrt(2 * g.h) * h.cos_half * std::sqrt(one_plus)
+                  : g.valley() ? std::sqrt(2 * g.h) * h.sin_half * std::sqrt(one_minus)
+                               : std::sin(xi) * std::sqrt(one_minus * one_plus);
+    }
+    chebyshev::sums(kind, series.data(), series.size(), tau, p + first, count);
+    for (std::size_t i = 0; i < count; ++i) p[first + i] *= factor[i];
+  }
 }
 
 }  // namespace wavecontact::detail
