@@ -265,8 +265,8 @@ BOOST_AUTO_TEST_CASE(sweep_equals_single_solves) {
 
 // A sweep of small steps starts each load from the contacts at the loads before it
 // (extrapolated in the load) and settles the zones that open or merge on the way: 40 loads
-// of a rough surface whose zones change in number along the line, each a contact and each
-// the single solve's.
+// of a rough surface whose zones change in number along the line, and a sweep of uneven
+// steps, each a contact and each the single solve's.
 BOOST_AUTO_TEST_CASE(fine_sweep_equals_single_solves) {
   const Surface s(fig7(0, 0.02, 32));
   std::vector<double> loads;
@@ -285,6 +285,16 @@ BOOST_AUTO_TEST_CASE(fine_sweep_equals_single_solves) {
     check_contact(sweep[i], 10, what);
   }
   BOOST_TEST(most >= fewest + 4);  // zones opened and merged along the sweep
+  // Uneven steps: a step 200 times the one before it is not extrapolated so far.
+  const std::vector<double> uneven{0.5 * pi, 0.5005 * pi, 0.6 * pi, 0.62 * pi};
+  const std::vector<Contact> jumps = solve_contact(s, uneven);
+  for (std::size_t i = 0; i < uneven.size(); ++i) {
+    const std::string what = "uneven steps, pa/p* = " + std::to_string(uneven[i] / pi);
+    const Contact single = solve_contact(s, uneven[i]);
+    BOOST_TEST_REQUIRE(single.zones_per_period() == jumps[i].zones_per_period(), what);
+    BOOST_TEST(single.pressure(0) == jumps[i].pressure(0), tt::tolerance(1e-10));
+    check_contact(jumps[i], 10, what);
+  }
 }
 
 // Geometric convergence in the nodes per zone, multi-zone cases on smooth profiles: the

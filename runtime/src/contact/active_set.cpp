@@ -161,7 +161,9 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double re
 
 Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before) {
   Configuration c = last.contact;
-  // Two contacts of the same zones and nodes: each end, coefficient and C linear in the load.
+  // Two contacts of the same zones and nodes: each end, coefficient and C linear in the load,
+  // trusted up to twice the step between them; ends that would leave the half period or
+  // cross keep the last contact as it is.
   const auto alike = [&](const Configuration& a, const Configuration& b) {
     if (a.zones.size() != b.zones.size()) return false;
     for (std::size_t k = 0; k < a.zones.size(); ++k) {
@@ -171,14 +173,16 @@ Configuration nearby_start(const SurfaceModel& surface, double P, const LoadCont
     }
     return true;
   };
-  if (before && before->P != last.P && alike(before->contact, last.contact)) {
-    const double t = (P - last.P) / (last.P - before->P);
+  const double t = before && before->P < last.P ? (P - last.P) / (last.P - before->P) : 0.0;
+  if (t > 0 && t <= 2 && alike(before->contact, last.contact)) {
     for (std::size_t k = 0; k < c.zones.size(); ++k) {
       const ZoneUnknowns& b = before->contact.zones[k];
       ZoneUnknowns& z = c.zones[k];
       const double a = z.geometry.top() ? 0.0 : z.geometry.a + t * (z.geometry.a - b.geometry.a);
       const double e = z.geometry.valley() ? pi : z.geometry.b + t * (z.geometry.b - b.geometry.b);
-      if (!(a < e)) return nearby_start(surface, P, last, nullptr);
+      if (!(a < e && (z.geometry.top() || a > 0) && (z.geometry.valley() || e < pi))) {
+        return nearby_start(surface, P, last, nullptr);
+      }
       z.geometry = ZoneGeometry(a, e);
       for (std::size_t j = 0; j < z.d.size(); ++j) z.d[j] += t * (z.d[j] - b.d[j]);
     }
