@@ -36,9 +36,9 @@ inline constexpr int most_working_nodes = 4096;  // while settling, the zones ar
 
 // A guess for settle at the load P from the contacts at the last loads of a sweep: with the
 // contact before it of the same zones and nodes, each end, coefficient and C extrapolated
-// linearly in the load (up to twice the step between the two), else the last contact; each zone's series then cut to
-// the nodes its width asks for (those that near neighbours or a kink's window asked for at that load are asked for
-// again where still needed).
+// linearly in the load (up to twice the step between the two), else the last contact; each
+// zone's series then cut to the nodes its width asks for (those that near neighbours or a
+// kink's window asked for at that load are asked for again where still needed).
 struct LoadContact {
   double P = 0;
   Configuration contact;
