@@ -48,7 +48,8 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
 // most its coefficients' sum times its logarithm), with alternating signs; relative to the
 // largest pressure, the ends to the period (as zone_differences).
 double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
-                         const Configuration& c, double highest) {
+                         const ContactSolution& solution, double highest) {
+  const Configuration& c = solution.configuration();
   std::vector<double> magnitude;
   for (const ZoneUnknowns& z : c.zones) magnitude.push_back(own_potential(z));
   std::vector<double> shift(c.zones.size());
@@ -64,7 +65,7 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
     shift[k] = (k % 2 == 0 ? 1 : -1) * std::numeric_limits<double>::epsilon() * terms;
   });
   const std::vector<double> moved =
-      zone_differences(ContactSolution(surface, c), ContactSolution(surface, system.perturbed(c, shift)), highest);
+      zone_differences(solution, ContactSolution(surface, system.perturbed(c, shift)), highest);
   return moved.empty() ? 0.0 : *std::max_element(moved.begin(), moved.end());
 }
 
@@ -98,11 +99,15 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     for (ZoneUnknowns& z : c.zones) z.d.resize(static_cast<std::size_t>(fixed_nodes), 0.0);
   }
   c = solve(c);
+  // Each configuration's solution formed once: the differences, the verification and the
+  // rounding share them.
+  auto current = std::make_shared<const ContactSolution>(surface, c);
+  std::shared_ptr<const ContactSolution> coarser_solution;  // the last round's
   // A zone keeps doubling while its change is above half the tolerance and still falls
   // (by four at least: below, its rounding is reached).
   std::vector<double> difference, previous(c.zones.size(), std::numeric_limits<double>::infinity());
   std::vector<bool> converging(c.zones.size(), true);
-  const double highest = highest_sampled_pressure(ContactSolution(surface, c));
+  const double highest = highest_sampled_pressure(*current);
   // A zone already at its most nodes cannot double: its estimate is its change from half as many.
   const auto most = [](const ZoneUnknowns& z) {
     return static_cast<std::size_t>(z.kink_window > 0 ? most_kinked_nodes : most_nodes);
@@ -115,8 +120,7 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
       if (z.d.size() >= most(z)) z.d.resize(z.d.size() / 2), halved = true;
     }
     if (halved) {
-      const std::vector<double> change =
-          zone_differences(ContactSolution(surface, solve(coarser)), ContactSolution(surface, c), highest);
+      const std::vector<double> change = zone_differences(ContactSolution(surface, solve(coarser)), *current, highest);
       for (std::size_t k = 0; k < change.size(); ++k) {
         if (c.zones[k].d.size() >= most(c.zones[k])) capped_change = std::max(capped_change, change[k]);
       }
@@ -133,8 +137,8 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     }
     if (!grown) break;
     finer = solve(finer);
-    const std::vector<double> change =
-        zone_differences(ContactSolution(surface, c), ContactSolution(surface, finer), highest);
+    auto refined = std::make_shared<const ContactSolution>(surface, finer);
+    const std::vector<double> change = zone_differences(*current, *refined, highest);
     for (std::size_t k = 0; k < change.size(); ++k) {
       if (finer.zones[k].d.size() != c.zones[k].d.size()) {
         converging[k] = change[k] < 0.25 * previous[k];
@@ -149,14 +153,19 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     trace_configuration("refinement", P, finer, "a finer contact");
     if (fixed_nodes > 0) break;
     c = std::move(finer);
+    coarser_solution = std::move(current);
+    current = std::move(refined);
   }
-  auto solution = std::make_shared<const ContactSolution>(surface, c);
-  const Verification v = verify(*solution, gap_tolerance * range, pressure_tolerance);
+  const Verification v = verify(*current, gap_tolerance * range, pressure_tolerance);
   const double error =
       std::max(capped_change, difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end()));
   int nodes = 0;
   for (const ZoneUnknowns& z : c.zones) nodes = std::max(nodes, static_cast<int>(z.d.size()));
-  const double rounding = rounding_estimate(surface, system, c, highest);
+  // Rounding moves the solution of the equations, whatever their nodes once they resolve it:
+  // its response is taken on the last round's solution, which the result differs from by
+  // less than the tolerance, with half the nodes (half the cost: on 100-load sweeps at
+  // n = 32 the estimate took 17 % of the time, and the map's error estimates did not change).
+  const double rounding = rounding_estimate(surface, system, coarser_solution ? *coarser_solution : *current, highest);
   // Admissible within the error of the solution itself (a gap of the estimate's order next to
   // an end whose place is as uncertain).
   const double allowed = std::max(gap_tolerance, 10 * std::max(error, rounding)) * range;
@@ -168,7 +177,7 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
                   P, v.lowest_pressure, v.lowest_gap);
     return {std::nullopt, std::move(c), text};
   }
-  return {SolvedContact{solution, P, std::max(error, rounding), rounding, nodes}, {}, {}};
+  return {SolvedContact{std::move(current), P, std::max(error, rounding), rounding, nodes}, {}, {}};
 }
 
 }  // namespace wavecontact::detail
