@@ -173,8 +173,13 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
     budget_.restart();
     lowest_residual_ = std::numeric_limits<double>::infinity();
     if (P >= onset_) {
-      solved[index] = full_contact(P);
-      continue;
+      // Verified like every contact returned: should the onset's samples have missed the
+      // deepest well's bottom, the tension sends this load to the zones' solver.
+      SolvedContact full = full_contact(P);
+      if (verify(*full.solution, gap_tolerance * surface_->height_range, pressure_tolerance).pressure_ok) {
+        solved[index] = std::move(full);
+        continue;
+      }
     }
     const Checkpoint checkpoint = [&](double residual) { check_budget(residual); };
     Configuration settled = settle_at(P, previous ? &*previous : nullptr, before ? &*before : nullptr);
