@@ -164,7 +164,7 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   // Rounding moves the solution of the equations, whatever their nodes once they resolve it:
   // its response is taken on the last round's solution, which the result differs from by
   // less than the tolerance, with half the nodes (half the cost: on 100-load sweeps at
-  // n = 32 the estimate took 17 % of the time, and the map's error estimates did not change).
+  // n = 32 the estimate took 17 % of the time; the error estimates reported stayed the same).
   const double rounding = rounding_estimate(surface, system, coarser_solution ? *coarser_solution : *current, highest);
   // Admissible within the error of the solution itself (a gap of the estimate's order next to
   // an end whose place is as uncertain).
