@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every refused input of wavecontact-derive --profile exits 2 (a budget spent: 4) with one
-# line on stderr that names what and why, and leaves the output directory exactly as it was.
+# line on stderr that names what and why, and leaves the output directory exactly as it was;
+# an input at the bounds but within them is derived.
 #   derive_refusals_test.sh DERIVE CASES WORKDIR
 # CASES: one case a line, "EXPRESSION|PART OF THE MESSAGE" (the profile has --param H).
 set -euo pipefail
@@ -57,15 +58,23 @@ check "The following argument was not expected: --bogus" --bogus
 slow="1/((H+cos(x))*(H2+cos(x))*(H3+cos(x))*(H4+cos(x)))"
 check 4 "exceeds its budget of 1 s (--max-seconds); nothing is written" --profile "$slow" \
   --param H=3 --param H2=5 --param H3=7 --param H4=11 --name p --max-seconds 1
-# A constant-led denominator of order 32 is within the bounds (issue 28: it was refused with a
-# false reason); it takes 26 s, so here its budget ends it.
-check 4 "exceeds its budget of 2 s" --profile "1/(2+cos(x))^32" --name p --max-seconds 2
 # The memory budget (not enforced under AddressSanitizer, where the time budget ends it).
 check 4 "the derivation exceeds its" --profile "(H*cos(x)+H2*cos(2*x)+H3*cos(3*x)+H4*cos(4*x))^64" \
   --param H=3 --param H2=5 --param H3=7 --param H4=11 --name p --max-memory-mb 100 --max-seconds 5
 
+# A constant-led denominator of order 32 is within the bounds (issue 28: it was refused with a
+# false reason): it is derived, in about 2 s (12 to 22 s, by the run's hash order, before the
+# monomial E pi was taken out of its factorisation; a 2-s budget then failed one run in ten).
+count=$((count + 1))
+if ! "$derive" --profile "1/(2+cos(x))^32" --name p --out "$work/accepted" > "$work/stdout" 2> "$work/stderr" ||
+   [ -s "$work/stderr" ] || [ ! -s "$work/accepted/profile_p.hpp" ]; then
+  echo "FAIL: 1/(2+cos(x))^32, within the bounds, was not derived:" >&2
+  cat "$work/stderr" >&2
+  failures=$((failures + 1))
+fi
+
 if [ "$failures" -ne 0 ]; then
-  echo "$failures of $count refusals failed" >&2
+  echo "$failures of $count cases failed" >&2
   exit 1
 fi
-echo "$count refusals: exit 2 (4 for a budget), one line, output directory untouched"
+echo "$((count - 1)) refusals: exit 2 (4 for a budget), one line, output directory untouched; 1 input at the bounds derived"

@@ -15,12 +15,33 @@ using GiNaC::numeric;
 
 namespace {
 
+// The polynomial p as monomial * rest, where no symbol divides rest.
+std::pair<ex, ex> split_monomial(const ex& p) {
+  ex rest = p.expand(), monomial = 1;
+  GiNaC::exset symbols;
+  for (auto it = rest.preorder_begin(); it != rest.preorder_end(); ++it) {
+    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.insert(*it);
+  }
+  for (const ex& symbol : symbols) {
+    const int power = rest.ldegree(symbol);
+    if (power > 0) {
+      monomial *= GiNaC::pow(symbol, power);
+      rest = (rest / GiNaC::pow(symbol, power)).expand();
+    }
+  }
+  return {monomial, rest};
+}
+
 // Factors of a product (a lone non-product counts as one factor), with exponents.
-// Pi is factored as an ordinary symbol.
+// Pi is factored as an ordinary symbol. A monomial factor is taken out before GiNaC's
+// factor: with it, factor's square-free gcds run in one variable more, and their cost
+// depends on the run's hash order (2 to 30 s for the pi E P(Cx, Ca), P dense of degree 32,
+// of the profile 1/(2 + cos x)^32); without it, 0.3 s on every run.
 std::vector<std::pair<ex, int>> factor_list(const ex& e) {
   static const GiNaC::symbol pi("pi");
   std::vector<std::pair<ex, int>> list;
-  const ex factored = GiNaC::factor(e.subs(GiNaC::Pi == pi)).subs(pi == GiNaC::Pi);
+  const auto [monomial, rest] = split_monomial(e.subs(GiNaC::Pi == pi));
+  const ex factored = (monomial * GiNaC::factor(rest)).subs(pi == GiNaC::Pi);
   const ex factors = GiNaC::is_a<GiNaC::mul>(factored) ? factored : GiNaC::lst{factored};
   for (const ex& f : factors) {
     if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<numeric>(f.op(1))) {
