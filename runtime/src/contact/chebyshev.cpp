@@ -89,18 +89,11 @@ const std::vector<double>& nodes(int M) { return table(M).nodes; }
 
 void coefficients(const double* values, int M, double* out) {
   if (M > tabulated) {
-    // y_j = 2 sum_i v_i cos(pi j (i + 1/2) / M) = 2 sum_i v_i T_j(tau_i). The plans of at
-    // most `kept_plans` sizes a thread (zones take many sizes over a long run; a plan of
-    // M = 32768 holds 256 KB).
-    constexpr std::size_t kept_plans = 64;
-    thread_local std::map<int, std::unique_ptr<CosineTransform>> transforms;
-    if (transforms.size() >= kept_plans && transforms.count(M) == 0) transforms.clear();
-    std::unique_ptr<CosineTransform>& transform = transforms[M];
-    if (!transform)
-      transform = std::make_unique<CosineTransform>(static_cast<std::size_t>(M), CosineTransform::Kind::dct2);
-    std::vector<double>& y = transform->data();
+    // y_j = 2 sum_i v_i cos(pi j (i + 1/2) / M) = 2 sum_i v_i T_j(tau_i).
+    CosineTransform& transform = planned_transform(static_cast<std::size_t>(M), CosineTransform::Kind::dct2);
+    std::vector<double>& y = transform.data();
     std::copy(values, values + M, y.begin());
-    transform->apply();
+    transform.apply();
     for (int j = 0; j < M; ++j) out[j] = y[static_cast<std::size_t>(j)] / (j == 0 ? 2.0 * M : static_cast<double>(M));
     return;
   }

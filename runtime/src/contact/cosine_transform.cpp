@@ -1,7 +1,10 @@
 #include "cosine_transform.hpp"
 
 #include <algorithm>
+#include <map>
+#include <memory>
 #include <mutex>
+#include <utility>
 #include <stdexcept>
 
 namespace wavecontact::detail {
@@ -27,9 +30,19 @@ CosineTransform::~CosineTransform() {
   fftw_destroy_plan(plan_);
 }
 
+CosineTransform& planned_transform(std::size_t points, CosineTransform::Kind kind) {
+  constexpr std::size_t kept_plans = 64;
+  thread_local std::map<std::pair<std::size_t, CosineTransform::Kind>, std::unique_ptr<CosineTransform>> transforms;
+  const auto key = std::make_pair(points, kind);
+  if (transforms.size() >= kept_plans && transforms.count(key) == 0) transforms.clear();
+  std::unique_ptr<CosineTransform>& transform = transforms[key];
+  if (!transform) transform = std::make_unique<CosineTransform>(points, kind);
+  return *transform;
+}
+
 std::vector<double> cosine_series_on_grid(const std::vector<double>& c, std::size_t N) {
   if (c.size() > N + 1) throw std::logic_error("cosine_series_on_grid: more terms than grid points");
-  CosineTransform t(N + 1);
+  CosineTransform& t = planned_transform(N + 1, CosineTransform::Kind::dct1);
   std::vector<double>& x = t.data();
   std::fill(x.begin(), x.end(), 0.0);
   // y_k = x_0 + (-1)^k x_N + 2 sum x_j cos(pi j k / N): the inner terms halved.

@@ -24,23 +24,23 @@ constexpr double settled = 1e-6;
 // at 0. An even sequence's discrete Fourier transform is its DCT-I.
 class Compliance {
  public:
-  Compliance(std::size_t points, double E) : factor_(points), transform_(points) {
+  Compliance(std::size_t points, double E) : factor_(points) {
     const double cells = 2.0 * static_cast<double>(points - 1);
     factor_[0] = 0;
     for (std::size_t k = 1; k < points; ++k) factor_[k] = 2.0 / (E * static_cast<double>(k) * cells);
   }
   void apply(const std::vector<double>& p, std::vector<double>& u) {
-    std::vector<double>& x = transform_.data();
+    CosineTransform& transform = planned_transform(factor_.size(), CosineTransform::Kind::dct1);
+    std::vector<double>& x = transform.data();
     std::copy(p.begin(), p.end(), x.begin());
-    transform_.apply();
+    transform.apply();
     for (std::size_t k = 0; k < factor_.size(); ++k) x[k] *= factor_[k];
-    transform_.apply();
+    transform.apply();
     u = x;
   }
 
  private:
   std::vector<double> factor_;
-  CosineTransform transform_;
 };
 
 // Polonsky and Keer's iteration: conjugate gradients on the cells in contact, the gap's mean
