@@ -35,7 +35,7 @@ std::pair<ex, ex> split_monomial(const ex& p) {
 // Factors of a product (a lone non-product counts as one factor), with exponents.
 // Pi is factored as an ordinary symbol. A monomial factor is taken out before GiNaC's
 // factor: with it, factor's square-free gcds run in one variable more, and their cost
-// depends on the run's hash order (2 to 30 s for the pi E P(Cx, Ca), P dense of degree 32,
+// depends on the run's hash order (2 to 22 s for the pi E P(Cx, Ca), P dense of degree 32,
 // of the profile 1/(2 + cos x)^32); without it, 0.3 s on every run.
 std::vector<std::pair<ex, int>> factor_list(const ex& e) {
   static const GiNaC::symbol pi("pi");

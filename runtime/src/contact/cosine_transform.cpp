@@ -4,8 +4,8 @@
 #include <map>
 #include <memory>
 #include <mutex>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 namespace wavecontact::detail {
 
