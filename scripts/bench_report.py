@@ -115,6 +115,9 @@ def print_report(r, python_ns):
             if whole is not None and now is not None:
                 row += f" {'whole, partial fractions':>24} {whole:12.4g} {whole / now:7.1f}x"
             print(row)
+        pole = r.seconds(f"BM_derive_profile_pole/{k}")
+        if pole is not None:
+            print(f"{'derive 1/(2 + cos x)^k, k = ' + str(k) + ', s':40} {pole:12.4g}")
     one, two = r.seconds("BM_waviness_pressure_threads/1"), r.seconds("BM_waviness_pressure_threads/2")
     if one is not None and two is not None:
         print(f"{'waviness 1e6 points, 2 threads, s':40} {two:12.4g} {'1 thread':>24} {one:12.4g} {one / two:7.2f}x")
@@ -280,8 +283,10 @@ def near_limit_table(r):
 
 def derive_times_table(r):
     """docs/performance.md: wavecontact-derive --profile end to end ("now") beside the closed
-    forms alone through the engine's partial fractions ("whole"), up to order 32."""
-    lines = ["| order k | H cos(k x): whole → now | ratio | H cos(x)^k: whole → now | ratio |", "|---|---|---|---|---|"]
+    forms alone through the engine's partial fractions ("whole"), up to order 32; and a pole
+    1/(2 + cos x)^k end to end, up to the bound 32 of a denominator."""
+    lines = ["| order k | H cos(k x): whole → now | ratio | H cos(x)^k: whole → now | ratio | 1/(2 + cos x)^k: now |",
+             "|---|---|---|---|---|---|"]
     for k in (8, 16, 32, 64, 128, 256):
         cells = []
         for shape in ("harmonic", "power"):
@@ -290,6 +295,8 @@ def derive_times_table(r):
                 return None
             cells += [f"{duration(whole)} → {duration(now)}", f"{whole / now:.3g}×"] if whole else [
                 f"→ {duration(now)}", ""]
+        pole = r.seconds(f"BM_derive_profile_pole/{k}")
+        cells.append(duration(pole) if pole is not None else "")
         lines.append(f"| {k} | " + " | ".join(cells) + " |")
     return lines
 
