@@ -163,3 +163,18 @@ BOOST_AUTO_TEST_CASE(kinked_zone_far_from_its_coarse_contact) {
   const BemEstimate bem = test::bem_extrapolated(two_scale_profile(1, m, H2, 4), 1.0, P, grid, kinks(m));
   compare(c, bem, 10, "m = 2.52, H2 = 0.0654, n = 4, P = 3.897727");
 }
+
+// The wave curve m = 33.7 (near a flat punch) with H2 = 0.2 at n = 18, by one continuation of
+// the campaign's twelve loads (pa/p* = 0.01 to beyond full contact, geometric) up to the
+// eighth, P = 9.3102. There a tension cut the zone through the top next to it, and a Newton
+// step sent the two new ends towards the top: reckoned in x^ from ends cut off at the top,
+// its damping let them cross, and no contact was found (campaign seed 2, sweep 160 with 12
+// loads). The damping is now reckoned in s, where a step moves every end linearly.
+BOOST_AUTO_TEST_CASE(ends_sent_past_the_top_by_a_newton_step) {
+  const double m = 33.703768832134941, H2 = 0.2, bottom = 0.01 * pi, top = 2 * pi * (1 + m + H2 * 18);
+  std::vector<double> loads;
+  for (int i = 0; i <= 7; ++i) loads.push_back(bottom * std::pow(top / bottom, i / 11.0));
+  const std::vector<Contact> sweep = solve_contact(Surface(WavinessParams{1, 10, m, 1}, {{H2, 18}}), loads);
+  const BemEstimate bem = test::bem_extrapolated(two_scale_profile(1, m, H2, 18), 1.0, loads.back(), grid, kinks(m));
+  compare(sweep.back(), bem, 10, "m = 33.7, H2 = 0.2, n = 18, P = " + std::to_string(loads.back()));
+}

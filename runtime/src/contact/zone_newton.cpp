@@ -61,10 +61,10 @@ void trace_iteration(int iteration, double residual, const std::vector<double>& 
                residual, row - (L.zones.empty() ? 0 : L.zones[zone].at), zone, L.zones.size());
 }
 
-// The damping of a Newton step from `now` to `full`: the largest fraction lambda <= 1 of it
-// with which every stretch between consecutive ends of [0, a_1, b_1, ..., pi] keeps a tenth
-// of its length, the stretch that limits it, and that stretch's length and its shrink under
-// the full step.
+// The damping of a Newton step: the largest fraction lambda <= 1 of it with which every
+// stretch between consecutive ends of [0, a_1, b_1, ..., pi] keeps a tenth of its length in
+// s, the stretch that limits it, and that stretch's length in x^ and its shrink under the
+// full step (the same fraction of it as in s).
 struct Damping {
   double lambda = 1;
   std::size_t limiting = 0;
@@ -72,21 +72,64 @@ struct Damping {
   bool overshoots() const { return lambda < 1 && shrink >= length; }  // the full step closes it
 };
 
-Damping damping(const Configuration& now, const Configuration& full) {
-  std::vector<double> ends{0}, moved{0};
-  for (std::size_t k = 0; k < now.zones.size(); ++k) {
-    ends.push_back(now.zones[k].geometry.a), ends.push_back(now.zones[k].geometry.b);
-    moved.push_back(full.zones[k].geometry.a), moved.push_back(full.zones[k].geometry.b);
+// An end as the unknowns hold it (SystemLayout): its distance 1 - s from the top (upper) or
+// 1 + s from the valley, which a Newton step moves linearly, past the top or the valley too.
+// (In x^ the motion is not linear, and a step that sends ends past the top is cut there: the
+// damping of the whole step, reckoned in x^ from such ends, let two ends next to the top
+// cross at a fraction of it, the residual of the crossed zones was not a number, and no
+// contact was found (campaign seed 2, sweep 160 with 12 loads).)
+struct EndPlace {
+  bool upper = true;
+  double distance = 0;
+};
+
+EndPlace fixed_end(double x) {
+  const bool upper = x <= pi / 2;
+  const double r = upper ? std::sin(x / 2) : std::cos(x / 2);
+  return {upper, 2 * r * r};
+}
+
+// s(left) - s(right), from the distances without cancellation when both are in one half.
+double s_difference(const EndPlace& left, const EndPlace& right) {
+  if (left.upper && right.upper) return right.distance - left.distance;
+  if (!left.upper && !right.upper) return left.distance - right.distance;
+  const auto s = [](const EndPlace& e) { return e.upper ? 1 - e.distance : e.distance - 1; };
+  return s(left) - s(right);
+}
+
+Damping damping(const Configuration& now, const SystemLayout& L, const std::vector<double>& X,
+                const std::vector<double>& step) {
+  std::vector<EndPlace> ends{{true, 0}}, moved{{true, 0}};
+  std::vector<double> angles{0};
+  for (std::size_t k = 0; k < L.zones.size(); ++k) {
+    const SystemLayout::Zone& lz = L.zones[k];
+    std::size_t i = lz.at;
+    const auto place = [&](bool free, bool upper, double x) {
+      if (free) {
+        ends.push_back({upper, X[i] * lz.end_scale}), moved.push_back({upper, (X[i] + step[i]) * lz.end_scale});
+        ++i;
+      } else {
+        ends.push_back(fixed_end(x)), moved.push_back(ends.back());
+      }
+    };
+    place(lz.a_free, lz.a_upper, lz.a);
+    place(lz.b_free, lz.b_upper, lz.b);
+    angles.push_back(now.zones[k].geometry.a), angles.push_back(now.zones[k].geometry.b);
   }
-  ends.push_back(pi), moved.push_back(pi);
+  ends.push_back({false, 0}), moved.push_back({false, 0});
+  angles.push_back(pi);
   Damping d;
+  double limiting_length = 0, limiting_shrink = 0;
   for (std::size_t e = 0; e + 1 < ends.size(); ++e) {
-    const double length = ends[e + 1] - ends[e];
-    const double shrink = length - (moved[e + 1] - moved[e]);
-    if (length > 0 && shrink > 0 && d.lambda * shrink > 0.9 * length) d.lambda = 0.9 * length / shrink, d.limiting = e;
+    const double length = s_difference(ends[e], ends[e + 1]);
+    const double shrink = length - s_difference(moved[e], moved[e + 1]);
+    if (length > 0 && shrink > 0 && d.lambda * shrink > 0.9 * length) {
+      d.lambda = 0.9 * length / shrink, d.limiting = e;
+      limiting_length = length, limiting_shrink = shrink;
+    }
   }
-  d.length = ends[d.limiting + 1] - ends[d.limiting];
-  d.shrink = d.length - (moved[d.limiting + 1] - moved[d.limiting]);
+  d.length = angles[d.limiting + 1] - angles[d.limiting];
+  d.shrink = limiting_length > 0 ? d.length * limiting_shrink / limiting_length : 0.0;
   return d;
 }
 
@@ -139,7 +182,14 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     result.iterations = iteration;
     result.residual = largest(at.F);
     if (checkpoint) checkpoint(result.residual);
-    if (!(result.residual < std::numeric_limits<double>::infinity())) return finish(Outcome::failed);
+    if (!(result.residual < std::numeric_limits<double>::infinity())) {
+      // Not a number: the iterate is no configuration to go on from; the lowest one is.
+      if (lowest_residual < std::numeric_limits<double>::infinity()) {
+        at.c = std::move(lowest);
+        result.residual = lowest_residual;
+      }
+      return finish(Outcome::failed);
+    }
     if (tracing()) trace_iteration(iteration, result.residual, at.F, L);
     if (result.residual < tolerance) return finish(Outcome::converged);
     if (result.residual < lowest_residual) lowest = at.c, lowest_residual = result.residual;
@@ -156,7 +206,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
-    const Damping damped = damping(at.c, unpack(plus(at.X, 1, step), L));
+    const Damping damped = damping(at.c, L, at.X, step);
     // A full step that would close the stretch twice running within a thousandth of a
     // resolution, or a stretch already next to nothing, is an event: a gap between zones
     // closing, a zone reaching the top or the valley, or a zone vanishing. (Within a whole
