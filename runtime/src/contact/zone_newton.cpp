@@ -83,11 +83,7 @@ struct EndPlace {
   double distance = 0;
 };
 
-EndPlace fixed_end(double x) {
-  const bool upper = x <= pi / 2;
-  const double r = upper ? std::sin(x / 2) : std::cos(x / 2);
-  return {upper, 2 * r * r};
-}
+EndPlace fixed_end(double x) { return {x <= pi / 2, end_distance(x, x <= pi / 2)}; }
 
 // s(left) - s(right), from the distances without cancellation when both are in one half.
 double s_difference(const EndPlace& left, const EndPlace& right) {

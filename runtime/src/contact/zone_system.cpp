@@ -23,18 +23,18 @@ constexpr double rounding_reach = 1e-11;
 // The angles of the zone's Chebyshev nodes.
 std::vector<double> node_angles(const ZoneGeometry& g, int count) { return g.angles_of(chebyshev::nodes(count)); }
 
-// An end's unknown (SystemLayout): 1 - s = 2 sin^2(x/2) in the upper half, 1 + s = 2 cos^2(x/2)
-// in the lower; and back (the unknown kept within [0, 2]).
-double end_unknown(double x, bool upper) {
-  const double r = upper ? std::sin(x / 2) : std::cos(x / 2);
-  return 2 * r * r;
-}
+// An end's angle from its unknown (end_distance), kept within [0, 2].
 double end_angle(double unknown, bool upper) {
   const double half = 2 * std::asin(std::sqrt(std::clamp(unknown, 0.0, 2.0) / 2));
   return upper ? half : pi - half;
 }
 
 }  // namespace
+
+double end_distance(double x, bool upper) {
+  const double r = upper ? std::sin(x / 2) : std::cos(x / 2);
+  return 2 * r * r;
+}
 
 double own_potential(const ZoneUnknowns& z) {
   double magnitude = 0;
@@ -93,8 +93,8 @@ std::vector<double> ZoneSystem::pack(const Configuration& c, const SystemLayout&
     const SystemLayout::Zone& lz = L.zones[k];
     const ZoneGeometry& g = c.zones[k].geometry;
     std::size_t i = lz.at;
-    if (lz.a_free) X[i++] = end_unknown(g.a, lz.a_upper) / lz.end_scale;
-    if (lz.b_free) X[i++] = end_unknown(g.b, lz.b_upper) / lz.end_scale;
+    if (lz.a_free) X[i++] = end_distance(g.a, lz.a_upper) / lz.end_scale;
+    if (lz.b_free) X[i++] = end_distance(g.b, lz.b_upper) / lz.end_scale;
     for (double v : c.zones[k].d) X[i++] = g.h * v / lz.row_scale;
   }
   X[L.C_at] = c.C / L.C_scale;

@@ -70,6 +70,10 @@ struct ZoneFields {
 std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vector<double>& x,
                                     const FieldTree::Batch& others, const KinkCorrection* kink);
 
+// An end's distance from the top, 1 - s = 2 sin^2(x/2) (upper: x^ <= pi/2), or from the
+// valley, 1 + s = 2 cos^2(x/2), without cancellation: what SystemLayout holds as its unknown.
+double end_distance(double x, bool upper);
+
 // A zone's own potential's magnitude, h sum |d_j| (its rows' natural unit).
 double own_potential(const ZoneUnknowns& z);
 
