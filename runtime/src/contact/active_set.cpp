@@ -157,15 +157,20 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double re
   }
 }
 
-// The ends of `start` for the zones of c, if they are the same zones (their count, and which
-// reach the top or the valley); the nodes stay c's.
-void restore_ends(Configuration& c, const Configuration& start) {
-  if (start.zones.size() != c.zones.size()) return;
+std::vector<ZoneGeometry> geometries(const Configuration& c) {
+  std::vector<ZoneGeometry> g;
+  for (const ZoneUnknowns& z : c.zones) g.push_back(z.geometry);
+  return g;
+}
+
+// The zones `start` for those of c, if they are the same zones (their count, and which reach
+// the top or the valley); the nodes stay c's.
+void restore_ends(Configuration& c, const std::vector<ZoneGeometry>& start) {
+  if (start.size() != c.zones.size()) return;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
-    const ZoneGeometry &from = start.zones[k].geometry, &now = c.zones[k].geometry;
-    if (from.top() != now.top() || from.valley() != now.valley()) return;
+    if (start[k].top() != c.zones[k].geometry.top() || start[k].valley() != c.zones[k].geometry.valley()) return;
   }
-  for (std::size_t k = 0; k < c.zones.size(); ++k) c.zones[k].geometry = start.zones[k].geometry;
+  for (std::size_t k = 0; k < c.zones.size(); ++k) c.zones[k].geometry = start[k];
 }
 
 }  // namespace
@@ -239,7 +244,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   // loads: ends 0.035 apart at 64 and 128 nodes), where Newton's method creeps and fails from
   // any count of nodes; from the start's ends it converges in a few steps. A failure after
   // such a growth therefore starts again from those ends, with the grown nodes.
-  Configuration start = c;
+  std::vector<ZoneGeometry> start = geometries(c);
   bool grown_after_converging = false;
   for (int change = 0; change <= changes; ++change) {
     if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
@@ -289,7 +294,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       zones_changed = true;
     }
     consistent(c);
-    if (zones_changed) start = c, grown_after_converging = false;
+    if (zones_changed) start = geometries(c), grown_after_converging = false;
   }
   return {std::nullopt, "the zones still changed after " + std::to_string(changes) + " changes"};
 }
