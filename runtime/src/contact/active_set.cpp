@@ -235,6 +235,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   const auto consistent = [&](Configuration& z) {
     fit_nodes(z, surface);
     system.relax(z);
+    system.choose_windows(z);
     z = system.newton(std::move(z), consistent_residual, checkpoint, true).configuration;
   };
   consistent(c);
@@ -249,6 +250,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   for (int change = 0; change <= changes; ++change) {
     if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
     fit_nodes(c, surface);
+    system.choose_windows(c);
     const ZoneSystem::Result r = system.newton(c, working_residual, checkpoint);
     trace_configuration("newton at", P, r.configuration,
                         r.outcome == ZoneSystem::Outcome::converged ? "converged"

@@ -129,6 +129,20 @@ Damping damping(const Configuration& now, const SystemLayout& L, const std::vect
   return d;
 }
 
+// The linear solve's relative tolerance for Newton's step at a point of largest scaled
+// residual `residual`: it falls like the root of the residual, superlinear convergence without
+// over-solving the first, far steps (Eisenstat and Walker); nor the last: a tenth of what takes
+// the residual below Newton's `tolerance` is enough (0: no such bound). With every end held the
+// equations are linear in the coefficients and C, and one step solved to that reaches the
+// tolerance: the root's rule would only take more steps (on 100-load sweeps at n = 32, the
+// consistent solves of settle took one Newton step instead of two, 22 % less time).
+double forcing_term(const SystemLayout& L, double residual, double tolerance) {
+  const bool linear =
+      std::all_of(L.zones.begin(), L.zones.end(), [](const SystemLayout::Zone& z) { return z.free_ends == 0; });
+  const double superlinear = linear ? 0.0 : 0.1 * std::sqrt(residual);
+  return std::min(1e-2, std::max({1e-6, superlinear, 0.1 * tolerance / residual}));
+}
+
 }  // namespace
 
 std::vector<double> ZoneSystem::linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance,
@@ -158,8 +172,11 @@ ZoneSystem::Linearisation ZoneSystem::linearise(Configuration c, bool ends_fixed
 ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, const Checkpoint& checkpoint,
                                       bool ends_fixed) const {
   Result result;
-  // Each kink correction's window chosen for the zones as they start, and kept.
-  for (ZoneUnknowns& z : start.zones) z.kink_window = KinkCorrection::radius_for(surface_, z.geometry);
+  for (ZoneUnknowns& z : start.zones) {
+    if (!KinkCorrection::fits(surface_, z.geometry, z.kink_window)) {
+      z.kink_window = KinkCorrection::radius_for(surface_, z.geometry);
+    }
+  }
   Linearisation at = linearise(std::move(start), ends_fixed);
   const SystemLayout& L = at.layout;
   const auto finish = [&](Outcome outcome) {
@@ -172,7 +189,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   Configuration lowest;                                   // the iterate of the lowest residual so far
   double lowest_residual = std::numeric_limits<double>::infinity();
   int stalled = 0;                                  // iterations without halving the best residual
-  bool coarse_steps = true;                         // linear solves no finer than the tolerance needs (newton_step)
+  bool coarse_steps = true;                         // linear solves no finer than the tolerance needs (forcing_term)
   double difference_step = coarse_difference_step;  // of the Jacobian's products (linear_solve)
   for (int iteration = 0; iteration < 40; ++iteration) {
     result.iterations = iteration;
@@ -198,7 +215,8 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       result.residual = lowest_residual;
       return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
-    const std::vector<double> step = newton_step(at, result.residual, coarse_steps ? tolerance : 0.0, difference_step);
+    const double forcing = forcing_term(L, result.residual, coarse_steps ? tolerance : 0.0);
+    const std::vector<double> step = newton_step(at, forcing, difference_step);
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
     if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
@@ -216,6 +234,23 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
     }
     closing = damped.overshoots() ? damped.limiting : std::numeric_limits<std::size_t>::max();
     Linearisation next = backtrack(at, step, damped.lambda, result.residual < rounding_reached);
+    // A step cut far may be one whose coefficients' part the ends' motion spoils: each zone's
+    // nodes move with its ends, and next to a kink the rows curve with them (campaign seed 3,
+    // sweep 69 with 16 loads: the full step met the end rows to 1e-13, the collocation rows
+    // erred by 7e-4 lambda^2, and Newton's method crept in steps of 1/16 to 1/32 for 93
+    // iterations). The ends' step with the coefficients solved for there is taken instead
+    // where it lowers both the largest residual and the 2-norm (there, 8 iterations).
+    if (next.step < 0x1p-3 && damped.lambda == 1 && !ends_fixed && result.residual >= rounding_reached) {
+      Linearisation other = eliminated(at, step, forcing, difference_step);
+      const double other_largest = largest(other.F), other_squares = squares(other.F);
+      const bool better = other_largest < std::min(result.residual, largest(next.F)) &&
+                          other_squares < std::min(squares(at.F), squares(next.F));
+      if (tracing()) {
+        std::fprintf(stderr, "wavecontact trace:     the ends' step, coefficients solved anew: residual %.3g (%s)\n",
+                     other_largest, better ? "taken" : "not taken");
+      }
+      if (better) next = std::move(other);
+    }
     // A step that had to be cut far may be one the coarse linear solve spoiled: from then on
     // the linear solves go to the forcing term alone.
     if (next.step < 0x1p-3) coarse_steps = false;
@@ -234,21 +269,9 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   return finish(Outcome::failed);
 }
 
-std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double residual, double tolerance,
-                                            double difference_step) const {
-  // The linear solve's tolerance falls like the root of the residual: superlinear
-  // convergence without over-solving the first, far steps (Eisenstat and Walker); nor the
-  // last: a tenth of what takes the residual below Newton's tolerance is enough. With every
-  // end held the equations are linear in the coefficients and C, and one step solved to that
-  // reaches the tolerance: the root's rule would only take more steps (on 100-load sweeps at
-  // n = 32, the consistent solves of settle took one Newton step instead of two, 22 % less
-  // time).
+std::vector<double> ZoneSystem::newton_step(const Linearisation& at, double forcing, double difference_step) const {
   std::vector<double> minus_F(at.F.size());
   for (std::size_t i = 0; i < at.F.size(); ++i) minus_F[i] = -at.F[i];
-  const bool linear = std::all_of(at.layout.zones.begin(), at.layout.zones.end(),
-                                  [](const SystemLayout::Zone& z) { return z.free_ends == 0; });
-  const double superlinear = linear ? 0.0 : 0.1 * std::sqrt(residual);
-  const double forcing = std::min(1e-2, std::max({1e-6, superlinear, 0.1 * tolerance / residual}));
   return linear_solve(at, minus_F, forcing, difference_step);
 }
 
@@ -268,6 +291,29 @@ ZoneSystem::Linearisation ZoneSystem::backtrack(const Linearisation& at, const s
     next.descended = squares(next.F) < (1 - 1e-4 * lambda) * merit;
     if (next.descended || at_rounding || halving == 8) return next;
   }
+}
+
+ZoneSystem::Linearisation ZoneSystem::eliminated(const Linearisation& at, const std::vector<double>& step,
+                                                 double forcing, double difference_step) const {
+  // With the ends held the equations are linear: one linear solve solves them, here to the
+  // step's own forcing term (the point is judged by its residual, as the step's points are).
+  Linearisation next;
+  next.layout = at.layout;
+  next.c = unpack(plus(at.X, 1, step), at.layout);
+  const Linearisation ends_held = linearise(next.c, true);
+  // Where the step's ends give a residual that is not a number, nothing is solved: GMRES would
+  // run through all its products (7 s on one step, a zone's end 2e-4 past the kink, its window
+  // 1.6e-4, 4096 nodes, campaign seed 4, sweep 12 with 16 loads).
+  if (largest(ends_held.F) < std::numeric_limits<double>::infinity()) {
+    next.c = unpack(plus(ends_held.X, 1, newton_step(ends_held, forcing, difference_step)), ends_held.layout);
+  }
+  next.X = pack(next.c, at.layout);
+  next.F = residual(next.c, at.layout, &next.external_slope);
+  return next;
+}
+
+void ZoneSystem::choose_windows(Configuration& c) const {
+  for (ZoneUnknowns& z : c.zones) z.kink_window = KinkCorrection::radius_for(surface_, z.geometry);
 }
 
 Configuration ZoneSystem::perturbed(const Configuration& c, const std::vector<double>& shift) const {

@@ -114,7 +114,12 @@ class ZoneSystem {
   };
   // ends_fixed: the ends stay where c has them, their conditions dropped (the linear
   // system of the coefficients and C alone: a consistent start for given zones).
+  // Each zone keeps the kink window it comes with where that fits it (its discretisation: the
+  // refinement compares node counts of one), else the window is chosen for it (choose_windows).
   Result newton(Configuration c, double tolerance, const Checkpoint& checkpoint, bool ends_fixed = false) const;
+
+  // Each kink correction's window chosen for the zones as they are.
+  void choose_windows(Configuration& c) const;
 
   // Whether every zone's kink window lies within the zone (ends move during a solve; a
   // window that no longer fits is chosen again by the next).
@@ -140,15 +145,17 @@ class ZoneSystem {
     bool descended = true;  // whether the residual's 2-norm fell on the way
   };
   Linearisation linearise(Configuration c, bool ends_fixed) const;
-  // Newton's step s = -J^-1 F at `at`, whose largest scaled residual is `residual`, by
-  // linear_solve to a tolerance that falls with the residual, no finer than Newton's
-  // `tolerance` needs (0: as fine as the forcing term asks).
-  std::vector<double> newton_step(const Linearisation& at, double residual, double tolerance,
-                                  double difference_step) const;
+  // Newton's step s = -J^-1 F at `at`, by linear_solve to the relative tolerance `forcing`.
+  std::vector<double> newton_step(const Linearisation& at, double forcing, double difference_step) const;
   // The point lambda s from `at` along Newton's step s, lambda halved up to 8 times while the
   // residual's 2-norm does not fall (not at all at the rounding floor).
   Linearisation backtrack(const Linearisation& at, const std::vector<double>& step, double lambda,
                           bool at_rounding) const;
+  // The point with the ends of Newton's step s from `at` and the coefficients and C that solve
+  // the other equations there: Newton's step for the ends alone, the coefficients eliminated
+  // (the step of the Schur complement, with the coefficients solved for anew).
+  Linearisation eliminated(const Linearisation& at, const std::vector<double>& step, double forcing,
+                           double difference_step) const;
   // J s = rhs at `at`, to the relative tolerance, by preconditioned GMRES; J's products are
   // forward differences whose step is difference_step of the product vector's largest entry.
   std::vector<double> linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance,
