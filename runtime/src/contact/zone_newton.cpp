@@ -172,11 +172,7 @@ ZoneSystem::Linearisation ZoneSystem::linearise(Configuration c, bool ends_fixed
 ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, const Checkpoint& checkpoint,
                                       bool ends_fixed) const {
   Result result;
-  for (ZoneUnknowns& z : start.zones) {
-    if (!KinkCorrection::fits(surface_, z.geometry, z.kink_window)) {
-      z.kink_window = KinkCorrection::radius_for(surface_, z.geometry);
-    }
-  }
+  for (ZoneUnknowns& z : start.zones) z.kink_window = fitting_window(z.geometry, z.kink_window);
   Linearisation at = linearise(std::move(start), ends_fixed);
   const SystemLayout& L = at.layout;
   const auto finish = [&](Outcome outcome) {
@@ -301,12 +297,14 @@ ZoneSystem::Linearisation ZoneSystem::eliminated(const Linearisation& at, const 
   next.layout = at.layout;
   next.c = unpack(plus(at.X, 1, step), at.layout);
   const Linearisation ends_held = linearise(next.c, true);
-  // Where the step's ends give a residual that is not a number, nothing is solved: GMRES would
-  // run through all its products (7 s on one step, a zone's end 2e-4 past the kink, its window
-  // 1.6e-4, 4096 nodes, campaign seed 4, sweep 12 with 16 loads).
-  if (largest(ends_held.F) < std::numeric_limits<double>::infinity()) {
-    next.c = unpack(plus(ends_held.X, 1, newton_step(ends_held, forcing, difference_step)), ends_held.layout);
+  // Where the step's ends give a residual that is not a number, nothing more is computed (the
+  // point is not taken): GMRES would run through all its products (7 s on one step, a zone's end 2e-4 past the kink,
+  // its window 1.6e-4, 4096 nodes, campaign seed 4, sweep 12 with 16 loads).
+  if (!(largest(ends_held.F) < std::numeric_limits<double>::infinity())) {
+    next.F.assign(at.F.size(), std::numeric_limits<double>::quiet_NaN());
+    return next;
   }
+  next.c = unpack(plus(ends_held.X, 1, newton_step(ends_held, forcing, difference_step)), ends_held.layout);
   next.X = pack(next.c, at.layout);
   next.F = residual(next.c, at.layout, &next.external_slope);
   return next;

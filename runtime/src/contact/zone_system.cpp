@@ -108,10 +108,8 @@ Configuration ZoneSystem::unpack(const std::vector<double>& X, const SystemLayou
     const double a = lz.a_free ? end_angle(X[i++] * lz.end_scale, lz.a_upper) : lz.a;
     const double b = lz.b_free ? end_angle(X[i++] * lz.end_scale, lz.b_upper) : lz.b;
     ZoneUnknowns z{ZoneGeometry(a, b), std::vector<double>(static_cast<std::size_t>(lz.count)), lz.kink_window};
-    // The solve's kink window, unless the ends moved into it: then the largest that fits.
-    if (!KinkCorrection::fits(surface_, z.geometry, z.kink_window)) {
-      z.kink_window = KinkCorrection::radius_for(surface_, z.geometry);
-    }
+    // The solve's kink window, unless the ends moved into it.
+    z.kink_window = fitting_window(z.geometry, z.kink_window);
     for (double& v : z.d) v = X[i++] * lz.row_scale / z.geometry.h;
     c.zones.push_back(std::move(z));
   }
@@ -194,6 +192,10 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
   for_each_index(c.zones.size(), zones_for_threads, zone_rows);
   F[L.C_at] = (std::accumulate(load.begin(), load.end(), 0.0) - P_) / P_;
   return F;
+}
+
+double ZoneSystem::fitting_window(const ZoneGeometry& zone, double window) const {
+  return KinkCorrection::fits(surface_, zone, window) ? window : KinkCorrection::radius_for(surface_, zone);
 }
 
 bool ZoneSystem::windows_fit(const Configuration& c) const {

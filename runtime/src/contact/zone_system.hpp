@@ -161,6 +161,8 @@ class ZoneSystem {
   std::vector<double> linear_solve(const Linearisation& at, const std::vector<double>& rhs, double tolerance,
                                    double difference_step) const;
 
+  // `window` if it fits the zone, else the largest that does (KinkCorrection::radius_for).
+  double fitting_window(const ZoneGeometry& zone, double window) const;
   SystemLayout layout(const Configuration& c, bool ends_fixed) const;  // fixed for one Newton solve
   std::vector<double> pack(const Configuration& c, const SystemLayout& L) const;
   Configuration unpack(const std::vector<double>& X, const SystemLayout& L) const;
