@@ -46,7 +46,10 @@ class Compliance {
 // Polonsky and Keer's iteration: conjugate gradients on the cells in contact, the gap's mean
 // there as the rigid approach, cells that penetrate brought back in, the load kept. On the
 // half period, a cell inside it stands for itself and its mirror image: weight 2 (the cells
-// at 0 and at the half period, 1).
+// at 0 and at the half period, 1). Where a step leaves the cells in contact as they were (no
+// cell let go, none brought back in: three iterations in four), the new pressure is the old
+// one less the step along the direction, scaled, and so is its displacement: it is updated
+// from the direction's response instead of transformed again.
 std::vector<double> grid_pressure(const std::vector<double>& clearance, double E, double mean_pressure) {
   const std::size_t n = clearance.size();
   const auto weight = [n](std::size_t i) { return i == 0 || i + 1 == n ? 1.0 : 2.0; };
@@ -54,9 +57,9 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
   Compliance compliance(n, E);
   std::vector<double> p(n, mean_pressure), u(n), gap(n), direction(n, 0.0), response(n), before(n);
   double G_before = 1;
-  bool conjugate = false;
+  bool conjugate = false, displaced = false;  // displaced: u is the displacement of p
   for (int iteration = 0; iteration < most_iterations; ++iteration) {
-    compliance.apply(p, u);
+    if (!displaced) compliance.apply(p, u);
     double approach = 0, contact = 0;
     for (std::size_t i = 0; i < n; ++i) {
       gap[i] = clearance[i] + u[i];
@@ -87,10 +90,11 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
     }
     const double step = curvature != 0 ? along / curvature : 0.0;
     before = p;
-    bool reentered = false;
+    bool reentered = false, released = false;
     for (std::size_t i = 0; i < n; ++i) {
       if (p[i] > 0) {
-        p[i] = std::max(0.0, p[i] - step * direction[i]);
+        p[i] -= step * direction[i];
+        if (!(p[i] > 0)) p[i] = 0, released = true;
       } else if (gap[i] < 0) {
         p[i] = -step * gap[i];
         reentered = true;
@@ -103,6 +107,10 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
     const double scale = mean_pressure * cells / total;
     double change = 0;
     for (std::size_t i = 0; i < n; ++i) p[i] *= scale, change += weight(i) * std::fabs(p[i] - before[i]);
+    displaced = !reentered && !released;
+    if (displaced) {
+      for (std::size_t i = 0; i < n; ++i) u[i] = scale * (u[i] - step * response[i]);
+    }
     if (change < settled * mean_pressure * cells && iteration > 2) break;
   }
   return p;
