@@ -23,8 +23,7 @@ using boost::math::double_constants::pi;
 
 BOOST_AUTO_TEST_CASE(crowded_contact_verified_before_its_nodes_grow) {
   const double m = 15.461108770636478;
-  const std::vector<Harmonic> roughness{
-      {0.019801441168662622, 662}, {0.2, 2}, {0.2, 4}, {0.037702671756412461, 12}};
+  const std::vector<Harmonic> roughness{{0.019801441168662622, 662}, {0.2, 2}, {0.2, 4}, {0.037702671756412461, 12}};
   double slopes = 0;
   for (const Harmonic& h : roughness) slopes += h.H * h.n;
   const double bottom = 0.01 * pi, top = 2 * pi * (1 + m + slopes);
