@@ -13,6 +13,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "contact/active_set.hpp"

@@ -298,8 +298,9 @@ ZoneSystem::Linearisation ZoneSystem::eliminated(const Linearisation& at, const 
   next.c = unpack(plus(at.X, 1, step), at.layout);
   const Linearisation ends_held = linearise(next.c, true);
   // Where the step's ends give a residual that is not a number, nothing more is computed (the
-  // point is not taken): GMRES would run through all its products (7 s on one step, a zone's end 2e-4 past the kink,
-  // its window 1.6e-4, 4096 nodes, campaign seed 4, sweep 12 with 16 loads).
+  // point is not taken): GMRES would run through all its products (7 s on one step, a zone's
+  // end 2e-4 past the kink, its window 1.6e-4, 4096 nodes, campaign seed 4, sweep 12 with 16
+  // loads).
   if (!(largest(ends_held.F) < std::numeric_limits<double>::infinity())) {
     next.F.assign(at.F.size(), std::numeric_limits<double>::quiet_NaN());
     return next;
