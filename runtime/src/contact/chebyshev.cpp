@@ -23,9 +23,10 @@ using boost::math::double_constants::pi;
 // multiplies coefficient j by j, a first-kind equation's amplification of noise).
 constexpr int tabulated = 128;
 
-// The nodes and the transform's cosines cos(pi j (i + 1/2) / M) of one M, computed once.
+// The nodes and the transform's cosines cos(pi j (i + 1/2) / M) of one M, computed once; stored
+// node by node, so that the transform adds one node's column to all coefficients at once.
 struct Table {
-  std::vector<double> nodes, cosines;  // cosines[j * M + i], for M <= tabulated
+  std::vector<double> nodes, cosines;  // cosines[i * M + j], for M <= tabulated
 };
 
 const Table& table(int M) {
@@ -43,7 +44,7 @@ const Table& table(int M) {
       for (int i = 0; i < M; ++i) {
         // j (i + 1/2) reduced modulo 2 M before the cosine keeps its argument small.
         const long k = (static_cast<long>(j) * (2 * i + 1)) % (4L * M);
-        entry->cosines[static_cast<std::size_t>(j) * static_cast<std::size_t>(M) + static_cast<std::size_t>(i)] =
+        entry->cosines[static_cast<std::size_t>(i) * static_cast<std::size_t>(M) + static_cast<std::size_t>(j)] =
             std::cos(pi * static_cast<double>(k) / (2.0 * M));
       }
     }
@@ -107,6 +108,27 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void clenshaw(const
   for (; first < points; ++first) out[first] = clenshaw(c, count, t[first], a, b);
 }
 
+// out_j = sum_i columns[i M + j] values_i, each sum over i in order: eight coefficients at a
+// time (the lanes above), then one by one; cloned as clenshaw is, the same bits on every CPU.
+__attribute__((target_clones("avx512f", "avx2", "default"))) void transform_by_columns(const double* columns,
+                                                                                       const double* values,
+                                                                                       std::size_t M, double* out) {
+  std::size_t first = 0;
+  for (; first + 8 <= M; first += 8) {
+    Lanes sum = {}, column;
+    for (std::size_t i = 0; i < M; ++i) {
+      load_lanes(column, columns + i * M + first);
+      sum += column * values[i];
+    }
+    store_lanes(out + first, sum);
+  }
+  for (; first < M; ++first) {
+    double sum = 0;
+    for (std::size_t i = 0; i < M; ++i) sum += columns[i * M + first] * values[i];
+    out[first] = sum;
+  }
+}
+
 }  // namespace
 
 const std::vector<double>& nodes(int M) { return table(M).nodes; }
@@ -122,12 +144,8 @@ void coefficients(const double* values, int M, double* out) {
     return;
   }
   const Table& t = table(M);
-  for (int j = 0; j < M; ++j) {
-    const double* row = t.cosines.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(M);
-    double sum = 0;
-    for (int i = 0; i < M; ++i) sum += row[i] * values[i];
-    out[j] = (j == 0 ? 1.0 : 2.0) * sum / M;
-  }
+  transform_by_columns(t.cosines.data(), values, static_cast<std::size_t>(M), out);
+  for (int j = 0; j < M; ++j) out[j] = (j == 0 ? 1.0 : 2.0) * out[j] / M;
 }
 
 std::vector<double> coefficients(const std::vector<double>& values) {

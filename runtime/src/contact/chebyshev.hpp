@@ -13,7 +13,8 @@ const std::vector<double>& nodes(int M);
 // The coefficients c_0 .. c_{M-1} of the polynomial of degree M - 1 through `values` at
 // nodes(M): c_j = (2 - [j = 0]) / M sum_i values_i T_j(tau_i).
 std::vector<double> coefficients(const std::vector<double>& values);
-// The same transform applied to values given as a pointer (count M), into `out` (M values).
+// The same transform applied to values given as a pointer (count M), into `out` (M values,
+// apart from `values`).
 void coefficients(const double* values, int M, double* out);
 
 // The coefficients c_0 .. c_n of the polynomial of degree n through values at the extrema
