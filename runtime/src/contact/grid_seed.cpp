@@ -139,8 +139,10 @@ int seed_cells(const SurfaceModel& surface) {
 Configuration grid_seed(const SurfaceModel& surface, double P, int cells, int nodes) {
   const double cell = 2 * pi / cells;
   const std::size_t half = static_cast<std::size_t>(cells / 2);
-  std::vector<double> clearance(half + 1);  // the half period: the surface is even
-  for (std::size_t i = 0; i <= half; ++i) clearance[i] = -surface.depth(cell * static_cast<double>(i));
+  std::vector<double> xs(half + 1), clearance(half + 1);  // the half period: the surface is even
+  for (std::size_t i = 0; i <= half; ++i) xs[i] = cell * static_cast<double>(i);
+  surface.height_differences(xs.data(), xs.size(), surface.top_angle, clearance.data());
+  for (double& depth : clearance) depth = -depth;
   const std::vector<double> p = grid_pressure(clearance, surface.E, P / (2 * pi));
 
   Configuration c;

@@ -63,16 +63,19 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
   };
   // Differences by products of sines: cos u - cos v = -2 sin((u + v)/2) sin((u - v)/2), and on
   // one branch Y(c) - Y(c0) = H1 (m + 1) (c - c0) / ((1 + m |c|) (1 + m |c0|)).
-  s->height_difference = [=](double x, double x0) {
-    const double c = std::cos(x), c0 = std::cos(x0);
-    double dy = 0;
-    if ((c >= 0) == (c0 >= 0)) {
-      dy = H1 * (m + 1) * detail::cos_difference(x, x0) / ((1 + m * std::fabs(c)) * (1 + m * std::fabs(c0)));
-    } else {
-      dy = wave(c) - wave(c0);
+  s->height_differences = [=](const double* xs, std::size_t count, double x0, double* out) {
+    const double c0 = std::cos(x0), wave_c0 = wave(c0), denominator_c0 = 1 + m * std::fabs(c0);
+    for (std::size_t i = 0; i < count; ++i) {
+      const double x = xs[i], c = std::cos(x);
+      double dy = 0;
+      if ((c >= 0) == (c0 >= 0)) {
+        dy = H1 * (m + 1) * detail::cos_difference(x, x0) / ((1 + m * std::fabs(c)) * denominator_c0);
+      } else {
+        dy = wave(c) - wave_c0;
+      }
+      for (const Harmonic& h : roughness) dy += h.H * -2 * std::sin(h.n * (x + x0) / 2) * std::sin(h.n * (x - x0) / 2);
+      out[i] = dy;
     }
-    for (const Harmonic& h : roughness) dy += h.H * -2 * std::sin(h.n * (x + x0) / 2) * std::sin(h.n * (x - x0) / 2);
-    return dy;
   };
   if (m > 0) {
     // x^ = pi/2, c = 0: beyond it the branch Y(c) = -Y_top(-c), so the slopes differ by
@@ -107,8 +110,9 @@ Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.
   auto s = std::make_shared<detail::SurfaceModel>();
   s->height = [e, q](double x) { return e.height(q.data(), std::cos(x)); };
   s->slope = [e, q](double x) { return -std::sin(x) * e.height_slope(q.data(), std::cos(x)); };
-  s->height_difference = [e, q](double x, double x0) {
-    return e.height(q.data(), std::cos(x)) - e.height(q.data(), std::cos(x0));
+  s->height_differences = [e, q](const double* xs, std::size_t count, double x0, double* out) {
+    const double y0 = e.height(q.data(), std::cos(x0));
+    for (std::size_t i = 0; i < count; ++i) out[i] = e.height(q.data(), std::cos(xs[i])) - y0;
   };
   const double E = profile.params().E;
   if (e.branch.beta > 0) {

@@ -2,6 +2,7 @@
 // angle (docs/contact.md), with the points where its slope is not analytic.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -27,8 +28,9 @@ struct Kink {
 struct SurfaceModel {
   std::function<double(double)> height;  // y(x^), 0 <= x^ <= pi
   std::function<double(double)> slope;   // dy/dx^
-  // y(x) - y(x0) without the cancellation of the plain difference (defaults to it).
-  std::function<double(double, double)> height_difference;
+  // out[i] = y(x[i]) - y(x0), i < count, without the cancellation of the plain difference;
+  // one call for a zone's nodes, whatever concerns x0 computed once.
+  std::function<void(const double* x, std::size_t count, double x0, double* out)> height_differences;
   std::vector<Kink> kinks;
   double resolution = 0;  // half the shortest wavelength, in x^: pi / (highest harmonic)
   double E = 0;           // reduced modulus E*
@@ -36,6 +38,11 @@ struct SurfaceModel {
   // The highest point (x^), the curvature -y'' there and max y - min y: locate_top().
   double top_angle = 0, top_curvature = 0, height_range = 0;
   // y(x) - y(top_angle): the heights the solver works with (y near the top keeps its digits).
+  double height_difference(double x, double x0) const {
+    double difference = 0;
+    height_differences(&x, 1, x0, &difference);
+    return difference;
+  }
   double depth(double x) const { return height_difference(x, top_angle); }
 };
 

@@ -147,9 +147,10 @@ std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vect
   const std::size_t M = x.size();
   const double half_E = surface.E / 2, x_ref = x[M / 2];
   std::vector<double> values(M), G(M);
+  surface.height_differences(x.data(), M, x_ref, values.data());
   for (std::size_t u = 0; u < M; ++u) {
-    values[u] = half_E * surface.height_difference(x[u], x_ref) -
-                (others.difference.empty() ? 0.0 : others.difference[u]) - (kink ? kink->potential(x[u]) : 0.0);
+    values[u] = half_E * values[u] - (others.difference.empty() ? 0.0 : others.difference[u]) -
+                (kink ? kink->potential(x[u]) : 0.0);
   }
   chebyshev::coefficients(values.data(), static_cast<int>(M), G.data());
   G[0] += half_E * surface.depth(x_ref) - others.at_reference;
