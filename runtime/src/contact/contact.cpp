@@ -33,13 +33,12 @@ void require_options(const char* function, const SolverOptions& options) {
   }
 }
 
-// The largest pressure on [lo, hi] (x^): every local maximum of a Chebyshev-spread sampling,
+// The largest pressure on zone k (x^): every local maximum of its Chebyshev-spread sampling,
 // refined by Brent's method between its neighbours.
-std::pair<double, double> largest_pressure(const detail::ContactSolution& s, double lo, double hi, int count) {
-  std::vector<double> xs, ps(static_cast<std::size_t>(count) + 1);
-  for (int i = 0; i <= count; ++i)
-    xs.push_back(std::clamp((lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count), lo, hi));
-  s.pressures(xs.data(), ps.data(), xs.size());
+std::pair<double, double> largest_pressure(const detail::ContactSolution& s, std::size_t k) {
+  const auto& [xs, ps] = s.sampled_pressure(k);
+  const double lo = s.zone(k).a, hi = s.zone(k).b;
+  const int count = static_cast<int>(xs.size()) - 1;
   std::pair<double, double> best{-std::numeric_limits<double>::infinity(), lo};
   for (int i = 0; i <= count; ++i) {
     const std::size_t u = static_cast<std::size_t>(i);
@@ -102,8 +101,7 @@ std::vector<Contact> solve_contact(const Surface& surface, const std::vector<dou
     for (std::size_t k = 0; k < solution.zone_count(); ++k) {
       const detail::ZoneGeometry& z = solution.zone(k);
       const double half = solution.zone_load(k);
-      const int samples = solution.pressure_samples(k);
-      const auto [p_max, x_max] = largest_pressure(solution, z.a, z.b, samples);
+      const auto [p_max, x_max] = largest_pressure(solution, k);
       const ContactZone right{z.a * to_x, z.b * to_x, half, p_max * to_p, x_max * to_x};
       c.fraction_ += (z.b - z.a) / pi;
       if (p_max * to_p > c.max_pressure_) c.max_pressure_ = p_max * to_p, c.x_of_max_ = x_max * to_x;

@@ -9,7 +9,11 @@
 namespace wavecontact::detail {
 
 ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration)
-    : surface_(std::move(surface)), configuration_(std::move(configuration)), fields_(*surface_, configuration_) {
+    : surface_(std::move(surface)),
+      configuration_(std::move(configuration)),
+      fields_(*surface_, configuration_),
+      samples_(configuration_.zones.size()),
+      sampled_(std::make_unique<std::once_flag[]>(configuration_.zones.size())) {
   for (const ZoneUnknowns& z : configuration_.zones) {
     ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
     pressure_series_.push_back(bounded_pressure_series(z.geometry, z.d.data(), static_cast<int>(z.d.size())));
@@ -75,6 +79,19 @@ int ContactSolution::pressure_samples(std::size_t k) const {
   const double features = 256 + 8 * std::ceil((g.b - g.a) / surface_->resolution);
   const double nodes = static_cast<double>(configuration_.zones[k].d.size());
   return 3 * static_cast<int>(std::min(nodes, features)) + 8;
+}
+
+const ContactSolution::PressureSamples& ContactSolution::sampled_pressure(std::size_t k) const {
+  std::call_once(sampled_[k], [&] {
+    const ZoneGeometry& g = zone(k);
+    const int count = pressure_samples(k);
+    PressureSamples& s = samples_[k];
+    for (int i = 0; i <= count; ++i)
+      s.xs.push_back(std::clamp((g.a + g.b) / 2 - (g.b - g.a) / 2 * std::cos(pi * i / count), g.a, g.b));
+    s.ps.resize(s.xs.size());
+    pressures(s.xs.data(), s.ps.data(), s.xs.size());
+  });
+  return samples_[k];
 }
 
 double ContactSolution::zone_load(std::size_t k) const { return detail::zone_load(configuration_, fields_, k); }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "surface_model.hpp"
@@ -39,6 +40,13 @@ class ContactSolution {
   // shortest harmonic (a zone's nodes may outnumber its features many times over, where
   // they resolve a kink, and each point costs a sum over every node).
   int pressure_samples(std::size_t k) const;
+  // Zone k's pressure at pressure_samples(k) + 1 such points over [a, b], ends included:
+  // computed once (by whichever thread asks first), for the verification and the largest
+  // pressure alike.
+  struct PressureSamples {
+    std::vector<double> xs, ps;
+  };
+  const PressureSamples& sampled_pressure(std::size_t k) const;
 
   // The total potential of the zones at x^ (off them).
   double potential(double x) const;
@@ -49,6 +57,8 @@ class ContactSolution {
   ZoneFields fields_;
   std::vector<double> ends_;                          // a_0, b_0, a_1, ...: for zone_at
   std::vector<std::vector<double>> pressure_series_;  // of each zone: bounded_pressure_series
+  mutable std::vector<PressureSamples> samples_;      // of each zone, once sampled_[k] has run
+  std::unique_ptr<std::once_flag[]> sampled_;
 };
 
 }  // namespace wavecontact::detail

@@ -31,29 +31,10 @@ std::vector<std::pair<double, double>> local_minima(const std::vector<double>& x
   return minima;
 }
 
-namespace {
-
-// The pressure on zone k at its samples: 3 M + 8 points spread like Chebyshev's.
-void sample_pressure(const ContactSolution& s, std::size_t k, std::vector<double>& xs, std::vector<double>& ps) {
-  const ZoneGeometry& g = s.zone(k);
-  const int count = s.pressure_samples(k);
-  xs.clear();
-  for (int i = 0; i <= count; ++i) {
-    const double x = (g.a + g.b) / 2 - (g.b - g.a) / 2 * std::cos(pi * i / count);
-    xs.push_back(std::clamp(x, g.a, g.b));
-  }
-  ps.resize(xs.size());
-  s.pressures(xs.data(), ps.data(), xs.size());
-}
-
-}  // namespace
-
 double highest_sampled_pressure(const ContactSolution& s) {
   std::vector<double> highest(s.zone_count(), 0.0);
   for_each_index(s.zone_count(), zones_for_threads, [&](std::size_t k) {
-    std::vector<double> xs, ps;
-    sample_pressure(s, k, xs, ps);
-    for (double p : ps) highest[k] = std::max(highest[k], p);
+    for (double p : s.sampled_pressure(k).ps) highest[k] = std::max(highest[k], p);
   });
   return highest.empty() ? 0.0 : *std::max_element(highest.begin(), highest.end());
 }
@@ -68,8 +49,7 @@ struct ZoneCheck {
 
 ZoneCheck check_zone(const ContactSolution& s, std::size_t k) {
   ZoneCheck check;
-  std::vector<double> xs, ps;
-  sample_pressure(s, k, xs, ps);
+  const auto& [xs, ps] = s.sampled_pressure(k);
   for (std::size_t i = 0; i < ps.size(); ++i) {
     if (ps[i] > check.highest) check.highest = ps[i], check.x_of_highest = xs[i];
   }
