@@ -170,8 +170,6 @@ std::vector<double> extrema_coefficients(const std::vector<double>& values) {
   return c;
 }
 
-double sum_t(const double* c, std::size_t count, double t) { return clenshaw(c, count, t, 1, 0); }
-
 void sums(Kind kind, const double* c, std::size_t count, const double* t, double* out, std::size_t points) {
   const double a = kind == Kind::t ? 1 : 2, b = kind == Kind::v ? -1 : kind == Kind::w ? 1 : 0;
   clenshaw(c, count, t, out, points, a, b);

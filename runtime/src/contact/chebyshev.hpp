@@ -21,8 +21,6 @@ void coefficients(const double* values, int M, double* out);
 // cos(pi i / n), i = 0 .. n (Clenshaw-Curtis points: they nest as n doubles).
 std::vector<double> extrema_coefficients(const std::vector<double>& values);
 
-// sum_j c_j T_j(t), by Clenshaw's recurrence.
-double sum_t(const double* c, std::size_t count, double t);
 // sum_j c_j P_j(t) at t[0 .. points) into out, P_j of the first kind T_j, the second U_j, the
 // third V_j (V_1 = 2t - 1) or the fourth W_j (W_1 = 2t + 1), the points' recurrences side by side.
 enum class Kind { t, u, v, w };

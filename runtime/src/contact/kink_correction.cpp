@@ -179,16 +179,36 @@ double KinkCorrection::direct_potential(double s) const {
   return -sum / pi;
 }
 
-double KinkCorrection::potential(double x) const {
-  const double s = std::cos(x);
+std::size_t KinkCorrection::piece_of(double s) const {
   // The last piece that starts at or below s (the pieces are sorted and tile [-1, 1]).
   const auto after =
       std::upper_bound(pieces_.begin(), pieces_.end(), s, [](double v, const Piece& p) { return v < p.lo; });
-  if (after == pieces_.begin()) return direct_potential(s);
-  const Piece& p = *(after - 1);
-  if (!(s <= p.hi)) return direct_potential(s);
-  const double t = std::clamp((2 * s - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
-  return chebyshev::sum_t(p.coefficients.data(), p.coefficients.size(), t);
+  if (after == pieces_.begin() || !(s <= (after - 1)->hi)) return pieces_.size();
+  return static_cast<std::size_t>(after - 1 - pieces_.begin());
+}
+
+double KinkCorrection::potential(double x) const {
+  double value = 0;
+  potentials(&x, 1, &value);
+  return value;
+}
+
+void KinkCorrection::potentials(const double* x, std::size_t count, double* out) const {
+  std::vector<double> s(count), t(count);
+  for (std::size_t i = 0; i < count; ++i) s[i] = std::cos(x[i]);
+  for (std::size_t i = 0; i < count;) {
+    const std::size_t k = piece_of(s[i]);
+    std::size_t end = i + 1;
+    while (end < count && piece_of(s[end]) == k) ++end;
+    if (k == pieces_.size()) {
+      for (std::size_t j = i; j < end; ++j) out[j] = direct_potential(s[j]);
+    } else {
+      const Piece& p = pieces_[k];
+      for (std::size_t j = i; j < end; ++j) t[j] = std::clamp((2 * s[j] - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
+      chebyshev::sums(chebyshev::Kind::t, p.coefficients.data(), p.coefficients.size(), t.data() + i, out + i, end - i);
+    }
+    i = end;
+  }
 }
 
 }  // namespace wavecontact::detail

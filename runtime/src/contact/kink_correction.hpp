@@ -45,6 +45,8 @@ class KinkCorrection {
   double density(double s) const;
   // -(1/pi) Int q_k(t) log|s - t| dt at s = cos x (any x^ in [0, pi]).
   double potential(double x) const;
+  // The same at x[0 .. count) into out: a run of points on one piece summed side by side.
+  void potentials(const double* x, std::size_t count, double* out) const;
   // Int q_k dt: its part of the zone's load.
   double load() const { return load_; }
 
@@ -56,6 +58,8 @@ class KinkCorrection {
     std::vector<double> coefficients;  // of the potential in t = (2 s - lo - hi)/(hi - lo)
   };
   double direct_potential(double s) const;
+  // The piece whose interpolant holds s (pieces_.size(): none, the direct potential there).
+  std::size_t piece_of(double s) const;
   // The kink's position and slope jump, not the Kink itself: its windows hold this object.
   double s0_;
   std::function<double(double)> slope_jump_;

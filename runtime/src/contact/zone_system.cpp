@@ -126,11 +126,13 @@ ZoneFields::ZoneFields(const SurfaceModel& surface, const Configuration& c) : tr
 
 FieldTree::Batch ZoneFields::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const {
   FieldTree::Batch batch = tree.evaluate(skip, x, x_ref, slopes);
+  std::vector<double> potential(kinked.empty() ? 0 : x.size());
   for (std::size_t l : kinked) {
     if (l == skip) continue;
     const double at_reference = kinks[l]->potential(x_ref);
     batch.at_reference += at_reference;
-    for (std::size_t i = 0; i < x.size(); ++i) batch.difference[i] += kinks[l]->potential(x[i]) - at_reference;
+    kinks[l]->potentials(x.data(), x.size(), potential.data());
+    for (std::size_t i = 0; i < x.size(); ++i) batch.difference[i] += potential[i] - at_reference;
   }
   return batch;
 }
@@ -146,11 +148,11 @@ std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vect
                                     const FieldTree::Batch& others, const KinkCorrection* kink) {
   const std::size_t M = x.size();
   const double half_E = surface.E / 2, x_ref = x[M / 2];
-  std::vector<double> values(M), G(M);
+  std::vector<double> values(M), G(M), kink_potential(M, 0.0);
   surface.height_differences(x.data(), M, x_ref, values.data());
+  if (kink) kink->potentials(x.data(), M, kink_potential.data());
   for (std::size_t u = 0; u < M; ++u) {
-    values[u] = half_E * values[u] - (others.difference.empty() ? 0.0 : others.difference[u]) -
-                (kink ? kink->potential(x[u]) : 0.0);
+    values[u] = half_E * values[u] - (others.difference.empty() ? 0.0 : others.difference[u]) - kink_potential[u];
   }
   chebyshev::coefficients(values.data(), static_cast<int>(M), G.data());
   G[0] += half_E * surface.depth(x_ref) - others.at_reference;
