@@ -68,6 +68,7 @@ FieldTree::FieldTree(const Configuration& c) : zones_(c.zones) {
     nodes_.reserve(2 * c.zones.size());
     build(0, c.zones.size());
   }
+  moments_computed_ = std::make_unique<std::once_flag[]>(nodes_.size());
 }
 
 std::size_t FieldTree::build(std::size_t first, std::size_t last) {
@@ -77,8 +78,24 @@ std::size_t FieldTree::build(std::size_t first, std::size_t last) {
   node.first = first, node.last = last;
   node.centre = Abscissa::midpoint(upper_[first], lower_[last - 1]);
   node.radius = difference(upper_[first], lower_[last - 1]) / 2;
+  if (last - first > leaf_zones) {
+    const std::size_t middle = first + (last - first) / 2;
+    node.children[0] = build(first, middle);
+    node.children[1] = build(middle, last);
+  }
+  nodes_[at] = std::move(node);
+  return at;
+}
+
+const FieldTree::Node& FieldTree::with_moments(std::size_t at) const {
+  std::call_once(moments_computed_[at], [&] { compute_moments(nodes_[at]); });
+  return nodes_[at];
+}
+
+void FieldTree::compute_moments(const Node& node) const {
+  const std::size_t first = node.first, last = node.last;
   node.moments.assign(order, 0.0);
-  if (last - first <= leaf_zones) {
+  if (node.children[0] == 0) {
     // A zone's moments about its centre m: mu_k = h^{k+1} I_k, I_k = sum_j d_j Int T_j tau^k
     // / sqrt(1 - tau^2) dtau = sum_j d_j pi 2^-k C(k, (k - j)/2) (k - j even, >= 0).
     const auto& C = binomials<order>();
@@ -97,18 +114,13 @@ std::size_t FieldTree::build(std::size_t first, std::size_t last) {
       shift<order>(own, z.geometry.h, delta, node.radius, node.moments);
     }
   } else {
-    const std::size_t middle = first + (last - first) / 2;
-    node.children[0] = build(first, middle);
-    node.children[1] = build(middle, last);
     for (std::size_t child : node.children) {
-      const Node& n = nodes_[child];
+      const Node& n = with_moments(child);
       shift<order>(n.moments, n.radius, difference(n.centre, node.centre), node.radius, node.moments);
     }
   }
   node.moments_over_k = node.moments;
   for (int k = 1; k < order; ++k) node.moments_over_k[static_cast<std::size_t>(k)] /= k;
-  nodes_[at] = std::move(node);
-  return at;
 }
 
 FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const {
@@ -132,7 +144,8 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
   std::size_t depth = 0;
   stack[depth++] = 0;
   while (depth > 0) {
-    const Node& node = nodes_[stack[--depth]];
+    const std::size_t at = stack[--depth];
+    const Node& node = nodes_[at];
     const double d_ref = difference(reference, node.centre);
     double nearest = std::fabs(d_ref);
     for (std::size_t i = 0; i < count; ++i) {
@@ -146,6 +159,7 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
       const double ratio = node.radius / nearest;
       const int terms =
           ratio > 0 ? std::min(order - 1, static_cast<int>(std::ceil(-39.1439465808987777 / std::log(ratio)))) : 0;
+      with_moments(at);
       const double* A = node.moments.data();
       const double* A_over_k = node.moments_over_k.data();
       const double t_ref = node.radius / d_ref;

@@ -10,6 +10,8 @@
 // valley, so that zones crowded at either end keep their digits.
 #pragma once
 
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "configuration.hpp"
@@ -52,14 +54,20 @@ class FieldTree {
     std::size_t children[2] = {0, 0};  // 0: a leaf
     Abscissa centre;
     double radius = 0;
-    std::vector<double> moments;         // mu_k / radius^k
-    std::vector<double> moments_over_k;  // the same over k (k >= 1)
+    // Computed when a point first takes them (with_moments): most nodes never act by them,
+    // the root spanning every zone among them.
+    mutable std::vector<double> moments;         // mu_k / radius^k
+    mutable std::vector<double> moments_over_k;  // the same over k (k >= 1)
   };
   std::size_t build(std::size_t first, std::size_t last);
+  // Node `at`, its moments computed once (by whichever thread asks first).
+  const Node& with_moments(std::size_t at) const;
+  void compute_moments(const Node& node) const;
 
   std::vector<ZoneUnknowns> zones_;
   std::vector<Abscissa> upper_, lower_;  // each zone's ends in s: at x^ = a and at x^ = b
   std::vector<Node> nodes_;
+  std::unique_ptr<std::once_flag[]> moments_computed_;  // one a node
 };
 
 }  // namespace wavecontact::detail
