@@ -31,7 +31,8 @@ double difference(const Abscissa& a, const Abscissa& b);
 class FieldTree {
  public:
   // The smooth densities (coefficients d) of the configuration's zones; a kink correction is
-  // not in it (the few zones that have one add its potential themselves).
+  // not in it (the few zones that have one add its potential themselves). The tree refers to
+  // c's zones, which must outlive it.
   explicit FieldTree(const Configuration& c);
 
   // The potential of every zone but `skip` (any value past the last zone skips none) at a
@@ -64,7 +65,7 @@ class FieldTree {
   const Node& with_moments(std::size_t at) const;
   void compute_moments(const Node& node) const;
 
-  std::vector<ZoneUnknowns> zones_;
+  const std::vector<ZoneUnknowns>& zones_;
   std::vector<Abscissa> upper_, lower_;  // each zone's ends in s: at x^ = a and at x^ = b
   std::vector<Node> nodes_;
   std::unique_ptr<std::once_flag[]> moments_computed_;  // one a node

@@ -14,6 +14,9 @@ namespace wavecontact::detail {
 class ContactSolution {
  public:
   ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration);
+  // Its fields refer to its own configuration: neither copied nor moved.
+  ContactSolution(const ContactSolution&) = delete;
+  ContactSolution& operator=(const ContactSolution&) = delete;
 
   const Configuration& configuration() const { return configuration_; }
   const SurfaceModel& surface() const { return *surface_; }

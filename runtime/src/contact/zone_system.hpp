@@ -51,6 +51,7 @@ struct SystemLayout {
 // The field of a configuration's zones: their smooth densities by the tree code, and the
 // kink correction of each zone a kink lies in (null for the others).
 struct ZoneFields {
+  // Of c, which must outlive the fields (the tree refers to its zones).
   ZoneFields(const SurfaceModel& surface, const Configuration& c);
   std::vector<std::shared_ptr<const KinkCorrection>> kinks;
   std::vector<std::size_t> kinked;  // the zones that have one
