@@ -132,6 +132,7 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
   const HalfAngle half_reference = HalfAngle::of(x_ref);
   const Abscissa reference = Abscissa::of_angle(half_reference);
   std::vector<HalfAngle> half(count);
+  std::vector<FieldValue> field(count);       // of one leaf's zone
   std::vector<double> from_reference(count);  // s_i - s_ref
   for (std::size_t i = 0; i < count; ++i) {
     half[i] = HalfAngle::of(x[i]);
@@ -197,10 +198,10 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
         const int n = static_cast<int>(z.d.size());
         const double at_reference = far_potential(z.geometry, z.d.data(), n, half_reference);
         out.at_reference += at_reference;
+        far_fields(z.geometry, z.d.data(), n, half.data(), count, field.data());
         for (std::size_t i = 0; i < count; ++i) {
-          const FieldValue f = far_field(z.geometry, z.d.data(), n, half[i]);
-          out.difference[i] += f.potential - at_reference;
-          if (slopes) out.slope[i] += f.slope;
+          out.difference[i] += field[i].potential - at_reference;
+          if (slopes) out.slope[i] += field[i].slope;
         }
       }
     } else {

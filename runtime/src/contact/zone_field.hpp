@@ -19,9 +19,11 @@ struct FieldValue {
   double potential = 0, slope = 0;  // Psi and dPsi/ds
 };
 
-// The field at the point of angle x off the zone (not inside it), of the density with
-// coefficients d[0 .. count). The series stops once its terms fall below 1e-17 of the sum.
-FieldValue far_field(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x);
+// The field at the points of angles x[0 .. points) off the zone (not inside it) into out, of
+// the density with coefficients d[0 .. count). Each point's series stops once its terms fall
+// below 1e-17 of the sum.
+void far_fields(const ZoneGeometry& g, const double* d, int count, const HalfAngle* x, std::size_t points,
+                FieldValue* out);
 // The potential alone, the same.
 double far_potential(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x);
 
