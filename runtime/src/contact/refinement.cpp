@@ -21,21 +21,17 @@ namespace wavecontact::detail {
 namespace {
 
 // How far two solutions of one topology differ: the ends (to the period) and, on each zone,
-// the pressure at the points that sample its extrema (to the largest pressure), short of
-// a hundredth of the zone from a free end (there the pressure goes like the root of the
-// distance to the end, whose own difference is the first term).
+// the pressure at the points that sample a's extrema (to the largest pressure), short of a
+// hundredth of the zone from a free end (there the pressure goes like the root of the
+// distance to the end, whose own difference is the first term): a's own samples of
+// Span::inside, which the rounding's estimate takes again.
 std::vector<double> zone_differences(const ContactSolution& a, const ContactSolution& b, double highest) {
   std::vector<double> difference(a.zone_count());
   for_each_index(a.zone_count(), zones_for_threads, [&](std::size_t k) {
     const ZoneGeometry& g = a.zone(k);
     double worst = std::max(std::fabs(g.a - b.zone(k).a), std::fabs(g.b - b.zone(k).b)) / pi;
-    const double margin = 0.01 * (g.b - g.a);
-    const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
-    const int count = a.pressure_samples(k);
-    std::vector<double> xs(static_cast<std::size_t>(count) + 1), pa(xs.size()), pb(xs.size());
-    for (int i = 0; i <= count; ++i)
-      xs[static_cast<std::size_t>(i)] = (lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count);
-    a.pressures(xs.data(), pa.data(), xs.size());
+    const auto& [xs, pa] = a.sampled_pressure(k, ContactSolution::Span::inside);
+    std::vector<double> pb(xs.size());
     b.pressures(xs.data(), pb.data(), xs.size());
     for (std::size_t i = 0; i < xs.size(); ++i) worst = std::max(worst, std::fabs(pa[i] - pb[i]) / highest);
     difference[k] = worst;

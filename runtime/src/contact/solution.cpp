@@ -12,8 +12,8 @@ ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Co
     : surface_(std::move(surface)),
       configuration_(std::move(configuration)),
       fields_(*surface_, configuration_),
-      samples_(configuration_.zones.size()),
-      sampled_(std::make_unique<std::once_flag[]>(configuration_.zones.size())) {
+      samples_(2 * configuration_.zones.size()),
+      sampled_(std::make_unique<std::once_flag[]>(2 * configuration_.zones.size())) {
   for (const ZoneUnknowns& z : configuration_.zones) {
     ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
     pressure_series_.push_back(bounded_pressure_series(z.geometry, z.d.data(), static_cast<int>(z.d.size())));
@@ -81,17 +81,24 @@ int ContactSolution::pressure_samples(std::size_t k) const {
   return 3 * static_cast<int>(std::min(nodes, features)) + 8;
 }
 
-const ContactSolution::PressureSamples& ContactSolution::sampled_pressure(std::size_t k) const {
-  std::call_once(sampled_[k], [&] {
+const ContactSolution::PressureSamples& ContactSolution::sampled_pressure(std::size_t k, Span span) const {
+  const std::size_t at = 2 * k + (span == Span::inside ? 1 : 0);
+  std::call_once(sampled_[at], [&] {
     const ZoneGeometry& g = zone(k);
     const int count = pressure_samples(k);
-    PressureSamples& s = samples_[k];
-    for (int i = 0; i <= count; ++i)
-      s.xs.push_back(std::clamp((g.a + g.b) / 2 - (g.b - g.a) / 2 * std::cos(pi * i / count), g.a, g.b));
+    PressureSamples& s = samples_[at];
+    if (span == Span::whole) {
+      for (int i = 0; i <= count; ++i)
+        s.xs.push_back(std::clamp((g.a + g.b) / 2 - (g.b - g.a) / 2 * std::cos(pi * i / count), g.a, g.b));
+    } else {
+      const double margin = 0.01 * (g.b - g.a);
+      const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
+      for (int i = 0; i <= count; ++i) s.xs.push_back((lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count));
+    }
     s.ps.resize(s.xs.size());
     pressures(s.xs.data(), s.ps.data(), s.xs.size());
   });
-  return samples_[k];
+  return samples_[at];
 }
 
 double ContactSolution::zone_load(std::size_t k) const { return detail::zone_load(configuration_, fields_, k); }

@@ -43,13 +43,16 @@ class ContactSolution {
   // shortest harmonic (a zone's nodes may outnumber its features many times over, where
   // they resolve a kink, and each point costs a sum over every node).
   int pressure_samples(std::size_t k) const;
-  // Zone k's pressure at pressure_samples(k) + 1 such points over [a, b], ends included:
-  // computed once (by whichever thread asks first), for the verification and the largest
-  // pressure alike.
+  // Zone k's pressure at pressure_samples(k) + 1 such points, computed once (by whichever
+  // thread asks first): over [a, b], ends included, for the verification and the largest
+  // pressure alike (Span::whole); or short of a hundredth of the zone from a free end, where
+  // the pressure goes like the root of the distance to it, for the refinement's comparisons
+  // of two solutions, which take a solution's samples twice (Span::inside).
   struct PressureSamples {
     std::vector<double> xs, ps;
   };
-  const PressureSamples& sampled_pressure(std::size_t k) const;
+  enum class Span { whole, inside };
+  const PressureSamples& sampled_pressure(std::size_t k, Span span = Span::whole) const;
 
   // The total potential of the zones at x^ (off them).
   double potential(double x) const;
@@ -60,7 +63,8 @@ class ContactSolution {
   ZoneFields fields_;
   std::vector<double> ends_;                          // a_0, b_0, a_1, ...: for zone_at
   std::vector<std::vector<double>> pressure_series_;  // of each zone: bounded_pressure_series
-  mutable std::vector<PressureSamples> samples_;      // of each zone, once sampled_[k] has run
+  // Of each zone and span (at 2 k + span), once sampled_ at the same place has run.
+  mutable std::vector<PressureSamples> samples_;
   std::unique_ptr<std::once_flag[]> sampled_;
 };
 
