@@ -37,12 +37,13 @@ struct SurfaceModel {
   double scale = 0;       // an upper bound of max |y|
   // The highest point (x^), the curvature -y'' there and max y - min y: locate_top().
   double top_angle = 0, top_curvature = 0, height_range = 0;
-  // y(x) - y(top_angle): the heights the solver works with (y near the top keeps its digits).
+  // y(x) - y(x0) at one point.
   double height_difference(double x, double x0) const {
     double difference = 0;
     height_differences(&x, 1, x0, &difference);
     return difference;
   }
+  // y(x) - y(top_angle): the heights the solver works with (y near the top keeps its digits).
   double depth(double x) const { return height_difference(x, top_angle); }
 };
 
