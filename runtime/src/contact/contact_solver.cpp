@@ -105,10 +105,10 @@ Configuration ContactSolver::full_contact_configuration(double P, int nodes) con
   const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface_, g, window);
   for (;;) {
     const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
-    std::vector<double> values(x.size()), G(static_cast<std::size_t>(count)), kink_potential(x.size(), 0.0);
+    std::vector<double> values(x.size()), G(static_cast<std::size_t>(count)), kink_potential(kink ? x.size() : 0);
     surface_->height_differences(x.data(), x.size(), surface_->top_angle, values.data());
     if (kink) kink->potentials(x.data(), x.size(), kink_potential.data());
-    for (std::size_t i = 0; i < x.size(); ++i) values[i] = half_E * values[i] - kink_potential[i];
+    for (std::size_t i = 0; i < x.size(); ++i) values[i] = half_E * values[i] - (kink ? kink_potential[i] : 0.0);
     chebyshev::coefficients(values.data(), count, G.data());
     Configuration c;
     ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count)), window};

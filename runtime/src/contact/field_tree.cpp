@@ -132,7 +132,7 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
   const HalfAngle half_reference = HalfAngle::of(x_ref);
   const Abscissa reference = Abscissa::of_angle(half_reference);
   std::vector<HalfAngle> half(count);
-  std::vector<FieldValue> field(count);       // of one leaf's zone
+  std::vector<FieldValue> field;              // of one leaf's zone, when one acts directly
   std::vector<double> from_reference(count);  // s_i - s_ref
   for (std::size_t i = 0; i < count; ++i) {
     half[i] = HalfAngle::of(x[i]);
@@ -198,6 +198,7 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
         const int n = static_cast<int>(z.d.size());
         const double at_reference = far_potential(z.geometry, z.d.data(), n, half_reference);
         out.at_reference += at_reference;
+        field.resize(count);
         far_fields(z.geometry, z.d.data(), n, half.data(), count, field.data());
         for (std::size_t i = 0; i < count; ++i) {
           out.difference[i] += field[i].potential - at_reference;

@@ -194,20 +194,26 @@ double KinkCorrection::potential(double x) const {
 }
 
 void KinkCorrection::potentials(const double* x, std::size_t count, double* out) const {
-  std::vector<double> s(count), t(count);
-  for (std::size_t i = 0; i < count; ++i) s[i] = std::cos(x[i]);
-  for (std::size_t i = 0; i < count;) {
-    const std::size_t k = piece_of(s[i]);
-    std::size_t end = i + 1;
-    while (end < count && piece_of(s[end]) == k) ++end;
-    if (k == pieces_.size()) {
-      for (std::size_t j = i; j < end; ++j) out[j] = direct_potential(s[j]);
-    } else {
-      const Piece& p = pieces_[k];
-      for (std::size_t j = i; j < end; ++j) t[j] = std::clamp((2 * s[j] - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
-      chebyshev::sums(chebyshev::Kind::t, p.coefficients.data(), p.coefficients.size(), t.data() + i, out + i, end - i);
+  // In chunks whose s and t stay on the stack (a single point allocates nothing).
+  constexpr std::size_t chunk = 64;
+  double s[chunk], t[chunk];
+  for (std::size_t first = 0; first < count; first += chunk) {
+    const std::size_t n = std::min(chunk, count - first);
+    for (std::size_t i = 0; i < n; ++i) s[i] = std::cos(x[first + i]);
+    for (std::size_t i = 0; i < n;) {
+      const std::size_t k = piece_of(s[i]);
+      std::size_t end = i + 1;
+      while (end < n && piece_of(s[end]) == k) ++end;
+      if (k == pieces_.size()) {
+        for (std::size_t j = i; j < end; ++j) out[first + j] = direct_potential(s[j]);
+      } else {
+        const Piece& p = pieces_[k];
+        for (std::size_t j = i; j < end; ++j) t[j] = std::clamp((2 * s[j] - p.lo - p.hi) / (p.hi - p.lo), -1.0, 1.0);
+        chebyshev::sums(chebyshev::Kind::t, p.coefficients.data(), p.coefficients.size(), t + i, out + first + i,
+                        end - i);
+      }
+      i = end;
     }
-    i = end;
   }
 }
 

@@ -148,11 +148,12 @@ std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vect
                                     const FieldTree::Batch& others, const KinkCorrection* kink) {
   const std::size_t M = x.size();
   const double half_E = surface.E / 2, x_ref = x[M / 2];
-  std::vector<double> values(M), G(M), kink_potential(M, 0.0);
+  std::vector<double> values(M), G(M), kink_potential(kink ? M : 0);
   surface.height_differences(x.data(), M, x_ref, values.data());
   if (kink) kink->potentials(x.data(), M, kink_potential.data());
   for (std::size_t u = 0; u < M; ++u) {
-    values[u] = half_E * values[u] - (others.difference.empty() ? 0.0 : others.difference[u]) - kink_potential[u];
+    values[u] = half_E * values[u] - (others.difference.empty() ? 0.0 : others.difference[u]) -
+                (kink ? kink_potential[u] : 0.0);
   }
   chebyshev::coefficients(values.data(), static_cast<int>(M), G.data());
   G[0] += half_E * surface.depth(x_ref) - others.at_reference;
