@@ -36,7 +36,7 @@ BOOST_AUTO_TEST_CASE(crowded_contact_verified_before_its_nodes_grow) {
            {0, 1.58959}, {1.58997, 1.59882}, {1.59972, 1.60838}, {1.60915, 1.61799}, {1.61825, pi}}) {
     guess.zones.push_back({detail::ZoneGeometry(a, b), std::vector<double>(detail::working_nodes, 0.0)});
   }
-  const detail::SettleOutcome s = detail::settle(surface.model(), P, guess, 400, {});
+  const detail::SettleOutcome s = detail::settle(surface.model(), P, guess, {400}, {});
   BOOST_TEST_REQUIRE(s.contact.has_value(), "no contact: " << s.failure);
   const std::vector<detail::ZoneUnknowns>& zones = s.contact->zones;
   BOOST_TEST_REQUIRE(zones.size() == 5u);

@@ -190,17 +190,25 @@ void restore_ends(Configuration& c, const std::vector<ZoneGeometry>& start) {
 
 }  // namespace
 
+bool same_zones(const Configuration& a, const Configuration& b) {
+  if (a.zones.size() != b.zones.size()) return false;
+  for (std::size_t k = 0; k < a.zones.size(); ++k) {
+    if (a.zones[k].geometry.top() != b.zones[k].geometry.top() ||
+        a.zones[k].geometry.valley() != b.zones[k].geometry.valley())
+      return false;
+  }
+  return true;
+}
+
 Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before) {
   Configuration c = last.contact;
   // Two contacts of the same zones and nodes: each end, coefficient and C linear in the load,
   // trusted up to twice the step between them; ends that would leave the half period or
   // cross keep the last contact as it is.
   const auto alike = [&](const Configuration& a, const Configuration& b) {
-    if (a.zones.size() != b.zones.size()) return false;
+    if (!same_zones(a, b)) return false;
     for (std::size_t k = 0; k < a.zones.size(); ++k) {
-      if (a.zones[k].d.size() != b.zones[k].d.size() || a.zones[k].geometry.top() != b.zones[k].geometry.top() ||
-          a.zones[k].geometry.valley() != b.zones[k].geometry.valley())
-        return false;
+      if (a.zones[k].d.size() != b.zones[k].d.size()) return false;
     }
     return true;
   };
@@ -235,7 +243,7 @@ double coefficient_tail(const std::vector<double>& d) {
   return (std::fabs(d[n - 1]) + std::fabs(d[n - 2]) + std::fabs(d[n - 3])) / std::max(magnitude, 1e-300);
 }
 
-SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P, Configuration c, int changes,
+SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P, Configuration c, SettleLimits limits,
                      const Checkpoint& checkpoint) {
   const SurfaceModel& surface = *model;
   const ZoneSystem system(surface, P);
@@ -262,7 +270,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   // such a growth therefore starts again from those ends, with the grown nodes.
   std::vector<ZoneGeometry> start = geometries(c);
   bool grown_after_converging = false;
-  for (int change = 0; change <= changes; ++change) {
+  for (int change = 0; change <= limits.changes; ++change) {
     if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
     fit_nodes(c, surface);
     system.choose_windows(c);
@@ -277,8 +285,8 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       // Zones that came too near for their nodes, or a zone across a kink too coarse for its
       // density, may keep Newton from converging; and a zone across a kink may need finer
       // nodes than its tail shows (its window's edges), up to most_working_nodes.
-      if (!fit_nodes(c, surface, true) && !grow_nodes(c, surface, 1e-6, kinked) &&
-          !grow_nodes(c, surface, 0.0, kinked)) {
+      if (limits.shortcut || (!fit_nodes(c, surface, true) && !grow_nodes(c, surface, 1e-6, kinked) &&
+                              !grow_nodes(c, surface, 0.0, kinked))) {
         char text[120];
         std::snprintf(text, sizeof text, "Newton's method did not converge on %zu zones (residual %.3g)",
                       c.zones.size(), r.residual);
@@ -321,7 +329,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
     consistent(c);
     if (zones_changed) start = geometries(c), grown_after_converging = false;
   }
-  return {std::nullopt, "the zones still changed after " + std::to_string(changes) + " changes"};
+  return {std::nullopt, "the zones still changed after " + std::to_string(limits.changes) + " changes"};
 }
 
 }  // namespace wavecontact::detail

@@ -42,8 +42,12 @@ inline constexpr int most_working_nodes = 4096;  // while settling, the zones ar
 struct LoadContact {
   double P = 0;
   Configuration contact;
+  bool continued = false;  // settled from such a guess at the loads before it
 };
 Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before);
+
+// Whether two contacts have the same zones: as many, the same ones through the top and the valley.
+bool same_zones(const Configuration& a, const Configuration& b);
 
 // The part of a zone's coefficients the last three hold: how far its series is from converged.
 double coefficient_tail(const std::vector<double>& d);
@@ -53,10 +57,19 @@ struct SettleOutcome {
   std::string failure;  // why not, when there is none
 };
 
-// The contact under the load P from `guess` (its coefficients need not solve anything), in
-// at most `changes` changes of zones; `checkpoint` is called between Newton steps (the work
-// budget).
-SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& surface, double P, Configuration guess, int changes,
-                     const Checkpoint& checkpoint);
+// How far settle goes: at most `changes` changes of zones. A shortcut, a guess with a surer
+// start behind it, is given up at Newton's method's first failure instead of mended by more
+// nodes: on a dense multi-scale sweep (campaign seed 11, sweep 82 with 60 loads) a failing
+// start from the previous load's contact grew nodes for 10 s at one load, nearly as long as
+// the whole sweep takes from the grid's seed at every load (11.3 s).
+struct SettleLimits {
+  int changes = 0;
+  bool shortcut = false;
+};
+
+// The contact under the load P from `guess` (its coefficients need not solve anything),
+// within `limits`; `checkpoint` is called between Newton steps (the work budget).
+SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& surface, double P, Configuration guess,
+                     SettleLimits limits, const Checkpoint& checkpoint);
 
 }  // namespace wavecontact::detail

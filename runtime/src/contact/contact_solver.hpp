@@ -2,10 +2,11 @@
 // convex energy), at each of several loads (docs/contact.md).
 //
 // At each load, in increasing order: from the contacts at the previous loads extrapolated to
-// this one (nearby_start), or at the first load (or if that fails) one zone at the top when
-// it is the contact, else the zones of the contact on a uniform grid (grid_seed.hpp), then
-// a grid twice as fine: made exact by Newton's method on the zone system with every change
-// of zones it or the verification calls for (active_set.hpp). The result is refined
+// this one (nearby_start) while the steps are small and the zones follow them, or at the
+// first load (or if that fails) one zone at the top when it is the contact, else the zones
+// of the contact on a uniform grid (grid_seed.hpp), then a grid twice as fine: made exact
+// by Newton's method on the zone system with every change of zones it or the verification
+// calls for (active_set.hpp). The result is refined
 // (refinement.hpp): nodes until the series converge, an error estimate, the rounding. Full
 // contact's onset is known beforehand (p = P/(2 pi) + p0 in full contact).
 #pragma once
@@ -35,7 +36,7 @@ class ContactSolver {
   std::vector<SolvedContact> solve(const std::vector<double>& loads) const;
 
  private:
-  Configuration settle_at(double P, const LoadContact* previous, const LoadContact* before) const;
+  LoadContact settle_at(double P, const LoadContact* previous, const LoadContact* before) const;
   std::optional<Configuration> single_zone(double P) const;
   SolvedContact full_contact(double P) const;
   Configuration full_contact_configuration(double P, int nodes) const;
