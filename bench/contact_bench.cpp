@@ -50,6 +50,30 @@ void BM_contact_curve_200(benchmark::State& state) {
 }
 BENCHMARK(BM_contact_curve_200)->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
 
+// A dense sweep of two roughness scales (n = 34 and 412) on the wave curve m = 3.74, whose
+// zones change from load to load (campaign seed 11, sweep 76): 40 loads from pa/p* = 0.01 to
+// full contact, each step a fifth of its load, so that each load may start from the loads
+// before (Arg 1: one call); against the same loads solved one by one (Arg 0), each from the
+// grid's seed.
+void BM_contact_dense_sweep(benchmark::State& state) {
+  const Surface surface(WavinessParams{1.0, 10.0, 3.7432525558204013, 1.0},
+                        {{0.0010532608530750996, 412}, {0.022823156268234428, 34}});
+  const double bottom = 0.01 * pi,
+               top = 2 * pi * (1 + 3.7432525558204013 + 0.0010532608530750996 * 412 + 0.022823156268234428 * 34);
+  std::vector<double> loads;
+  for (int i = 0; i < 40; ++i) loads.push_back(bottom * std::pow(top / bottom, i / 39.0));
+  const bool one_call = state.range(0) == 1;
+  for (auto _ : state) {
+    if (one_call) {
+      benchmark::DoNotOptimize(solve_contact(surface, loads, {1e-8, 0}).back().contact_fraction());
+    } else {
+      for (double P : loads) benchmark::DoNotOptimize(solve_contact(surface, P, {1e-8, 0}).contact_fraction());
+    }
+  }
+  state.SetLabel(one_call ? "one call" : "one call a load");
+}
+BENCHMARK(BM_contact_dense_sweep)->Arg(1)->Arg(0)->UseRealTime()->Unit(benchmark::kMillisecond);
+
 // Two scales a decade apart, n = 6 and 64 (H2 = 0.15, 0.01), at P = 5.3 (pa/p* = 1.69, eight
 // zones per period, near full contact): 36 s with the several-interval solver.
 void BM_contact_two_scales_6_64(benchmark::State& state) {
