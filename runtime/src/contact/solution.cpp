@@ -87,14 +87,10 @@ const ContactSolution::PressureSamples& ContactSolution::sampled_pressure(std::s
     const ZoneGeometry& g = zone(k);
     const int count = pressure_samples(k);
     PressureSamples& s = samples_[at];
-    if (span == Span::whole) {
-      for (int i = 0; i <= count; ++i)
-        s.xs.push_back(std::clamp((g.a + g.b) / 2 - (g.b - g.a) / 2 * std::cos(pi * i / count), g.a, g.b));
-    } else {
-      const double margin = 0.01 * (g.b - g.a);
-      const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
-      for (int i = 0; i <= count; ++i) s.xs.push_back((lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count));
-    }
+    const double margin = span == Span::inside ? 0.01 * (g.b - g.a) : 0.0;
+    const double lo = g.top() ? g.a : g.a + margin, hi = g.valley() ? g.b : g.b - margin;
+    for (int i = 0; i <= count; ++i)
+      s.xs.push_back(std::clamp((lo + hi) / 2 - (hi - lo) / 2 * std::cos(pi * i / count), g.a, g.b));
     s.ps.resize(s.xs.size());
     pressures(s.xs.data(), s.ps.data(), s.xs.size());
   });

@@ -41,7 +41,7 @@ constexpr std::size_t lanes = sizeof(Lanes) / sizeof(double);
 
 // Each lane's series runs as the point's own would alone (its power frozen and its sums kept
 // once its terms fall below 1e-17), so that every point gets the bits of the scalar sum; a
-// last partial block repeats its last point. Cloned for AVX2 and AVX-512; zone_field.cpp is
+// last partial block repeats its last point's map. Cloned for AVX2 and AVX-512; zone_field.cpp is
 // compiled without contracting products and sums into FMAs, so every CPU gives the same bits.
 __attribute__((target_clones("avx512f", "avx2", "default"))) void far_fields(const ZoneGeometry& g, const double* d,
                                                                              int count, const HalfAngle* x,
@@ -51,7 +51,7 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void far_fields(con
     const std::size_t n = std::min(lanes, points - first);
     Lanes zeta, log_zeta, w;
     for (std::size_t i = 0; i < lanes; ++i) {
-      const Conformal c = conformal(g, x[first + std::min(i, n - 1)]);
+      const Conformal c = i < n ? conformal(g, x[first + i]) : Conformal{zeta[n - 1], log_zeta[n - 1], w[n - 1]};
       zeta[i] = c.zeta, log_zeta[i] = c.log_zeta, w[i] = c.w;
     }
     Lanes series = {}, sum = Lanes{} + d[0], power = Lanes{} + 1.0;
@@ -74,14 +74,9 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void far_fields(con
 }
 
 double far_potential(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x) {
-  const Conformal c = conformal(g, x);
-  double series = 0, power = 1;
-  for (int j = 1; j < count; ++j) {
-    power *= c.zeta;
-    series += d[j] * power / j;
-    if (std::fabs(power) < 1e-17) break;
-  }
-  return g.h * (d[0] * (self_logarithm(g) + c.log_zeta) + series);
+  FieldValue field;
+  far_fields(g, d, count, &x, 1, &field);
+  return field.potential;
 }
 
 void own_potential(const ZoneGeometry& g, const double* d, int count, double* o) {
