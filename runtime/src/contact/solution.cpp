@@ -74,6 +74,22 @@ double ContactSolution::gap(double x) const {
   return 2 / surface_->E * (potential(x) - configuration_.C) - surface_->depth(x);
 }
 
+void ContactSolution::gaps(const double* xs, double* gs, std::size_t count) const {
+  std::vector<double> off;
+  std::vector<std::size_t> at;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double x = std::fabs(xs[i]);
+    gs[i] = 0;
+    if (zone_at(x) == zone_count()) off.push_back(x), at.push_back(i);
+  }
+  if (off.empty()) return;
+  const FieldTree::Batch field = fields_.evaluate(zone_count(), off, off[off.size() / 2], false);
+  std::vector<double> depth(off.size());
+  surface_->height_differences(off.data(), off.size(), surface_->top_angle, depth.data());
+  const double offset = field.at_reference - configuration_.C;
+  for (std::size_t j = 0; j < off.size(); ++j) gs[at[j]] = 2 / surface_->E * (offset + field.difference[j]) - depth[j];
+}
+
 int ContactSolution::pressure_samples(std::size_t k) const {
   const ZoneGeometry& g = zone(k);
   const double features = 256 + 8 * std::ceil((g.b - g.a) / surface_->resolution);

@@ -34,6 +34,9 @@ class ContactSolution {
   double kink_pressure(std::size_t k, double x) const;
   // The gap (2/E*)(Psi(x^) - C) - (y(x^) - y_top) off the zones, 0 on them.
   double gap(double x) const;
+  // The same at xs[0 .. count) into gs: the points off the zones take one batch of the field
+  // (FieldTree::evaluate, its reference their middle point), best for points close together.
+  void gaps(const double* xs, double* gs, std::size_t count) const;
   // The load of zone k over its part of [0, pi]: pi h d_0 (the mirror image carries as much).
   double zone_load(std::size_t k) const;
   double load() const;  // P = 2 sum of zone_load

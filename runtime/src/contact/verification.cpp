@@ -19,7 +19,8 @@ std::vector<std::pair<double, double>> local_minima(const std::vector<double>& x
   for (std::size_t i = 0; i < n; ++i) {
     const bool left = i == 0 || values[i] <= values[i - 1];
     const bool right = i + 1 == n || values[i] < values[i + 1];
-    if (!left || !right || values[i] > at_most) continue;
+    const double rise = std::max(i > 0 ? values[i - 1] : values[i], i + 1 < n ? values[i + 1] : values[i]) - values[i];
+    if (!left || !right || values[i] - rise > at_most) continue;
     std::pair<double, double> best{xs[i], values[i]};
     const double a = i > 0 ? xs[i - 1] : xs[i], b = i + 1 < n ? xs[i + 1] : xs[i];
     if (b > a) {
@@ -53,7 +54,9 @@ ZoneCheck check_zone(const ContactSolution& s, std::size_t k) {
   for (std::size_t i = 0; i < ps.size(); ++i) {
     if (ps[i] > check.highest) check.highest = ps[i], check.x_of_highest = xs[i];
   }
-  check.minima = local_minima(xs, ps, [&](double x) { return s.pressure(x); });
+  // Only a minimum that may fall below 0 can be a tension, or the lowest pressure reported.
+  check.minima = local_minima(
+      xs, ps, [&](double x) { return s.pressure(x); }, 0.0);
   return check;
 }
 
@@ -69,15 +72,18 @@ GapCheck check_gap(const ContactSolution& s, double lo, double hi, double gap_to
   const SurfaceModel& surface = s.surface();
   const double spacing = surface.resolution / 8;
   const int count = std::max(8, static_cast<int>(std::ceil((hi - lo) / spacing)));
-  std::vector<double> xs, gaps;
+  std::vector<double> xs;
   for (int i = 0; i <= count; ++i) {
     // Chebyshev-like near the zone ends (the gap grows like a 3/2 power there), even inside.
     const double t = static_cast<double>(i) / count;
     const double x = lo + (hi - lo) * (0.5 - 0.5 * std::cos(pi * t)) * 0.25 + (hi - lo) * t * 0.75;
     xs.push_back(std::clamp(x, lo, hi));
-    gaps.push_back(s.gap(xs.back()));
   }
-  check.minima = local_minima(xs, gaps, [&](double x) { return s.gap(x); });
+  std::vector<double> gaps(xs.size());
+  s.gaps(xs.data(), gaps.data(), xs.size());
+  // Only a minimum that may fall below 0 can penetrate, or be the lowest gap reported.
+  check.minima = local_minima(
+      xs, gaps, [&](double x) { return s.gap(x); }, 0.0);
   for (const auto& [x, value] : check.minima) {
     // The gap grows like the 3/2 power of the distance from a zone's end: a shallow dip
     // right next to one is the truncation of that zone's series, not a new contact.

@@ -1,0 +1,86 @@
+// The verification of a contact on the whole half period (runtime/src/contact/verification.*),
+// white-box: which sampled minima are refined, and the gap sampled a stretch at a time.
+#define BOOST_TEST_MODULE verification
+#include <boost/math/constants/constants.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "contact/active_set.hpp"
+#include "contact/grid_seed.hpp"
+#include "contact/solution.hpp"
+#include "contact/verification.hpp"
+#include "wavecontact/contact.hpp"
+
+using namespace wavecontact;
+using boost::math::double_constants::pi;
+
+namespace {
+
+std::vector<double> samples(double lo, double hi, int count) {
+  std::vector<double> xs;
+  for (int i = 0; i <= count; ++i) xs.push_back(lo + (hi - lo) * i / count);
+  return xs;
+}
+
+}  // namespace
+
+// A well whose samples all lie above 0 but whose bottom lies below it, between two samples:
+// the rise to the higher neighbour (0.02) exceeds the lowest sample (0.0005), so it is refined
+// and its bottom found.
+BOOST_AUTO_TEST_CASE(a_well_that_may_cross_zero_is_refined) {
+  const auto f = [](double x) { return (x - 0.05) * (x - 0.05) - 0.002; };
+  const std::vector<double> xs = samples(-0.3, 0.4, 7);
+  std::vector<double> ys;
+  for (double x : xs) ys.push_back(f(x));
+  BOOST_TEST_REQUIRE(*std::min_element(ys.begin(), ys.end()) > 0.0);
+  const auto minima = detail::local_minima(xs, ys, f, 0.0);
+  BOOST_TEST_REQUIRE(minima.size() == 1u);
+  BOOST_TEST(minima[0].first == 0.05, boost::test_tools::tolerance(1e-6));
+  BOOST_TEST(minima[0].second == -0.002, boost::test_tools::tolerance(1e-9));
+}
+
+// Wells sampled eight times a wavelength, the lowest 0.5 above 0: every sample exceeds its
+// rise, none can reach 0 and none is refined (no call of f); with no bound, each one is.
+BOOST_AUTO_TEST_CASE(a_well_that_cannot_reach_zero_is_left_out) {
+  int calls = 0;
+  const auto f = [&](double x) { return ++calls, 1.5 + std::cos(x); };
+  const std::vector<double> xs = samples(0.1, 0.1 + 6 * pi, 24);
+  std::vector<double> ys;
+  for (double x : xs) ys.push_back(1.5 + std::cos(x));
+  BOOST_TEST(detail::local_minima(xs, ys, f, 0.0).empty());
+  BOOST_TEST(calls == 0);
+  const auto all = detail::local_minima(xs, ys, f);
+  BOOST_TEST(all.size() == 3u);
+  for (const auto& [x, value] : all) BOOST_TEST(value == 0.5, boost::test_tools::tolerance(1e-12));
+}
+
+// The gap of a contact of several zones (m = 0, H2 = 0.02, n = 32), sampled a stretch at a
+// time in one batch of the tree code, against the gap point by point: the same to rounding.
+BOOST_AUTO_TEST_CASE(gaps_in_one_batch_equal_the_gap_point_by_point) {
+  const Surface surface(WavinessParams{1, 10, 0, 1}, {{0.02, 32}});
+  const auto& model = surface.model();
+  const double P = 0.5;
+  const detail::SettleOutcome settled =
+      detail::settle(model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes),
+                     {400}, {});
+  BOOST_TEST_REQUIRE(settled.contact.has_value(), "no contact: " << settled.failure);
+  const detail::ContactSolution solution(model, *settled.contact);
+  BOOST_TEST_REQUIRE(solution.zone_count() >= 3u);
+  double largest = 0;
+  for (std::size_t k = 0; k < solution.zone_count(); ++k) {
+    const double lo = solution.zone(k).b, hi = k + 1 < solution.zone_count() ? solution.zone(k + 1).a : pi;
+    const std::vector<double> xs = samples(lo, hi, 40);
+    std::vector<double> batch(xs.size());
+    solution.gaps(xs.data(), batch.data(), xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const double one = solution.gap(xs[i]);
+      largest = std::max(largest, std::fabs(batch[i] - one));
+      BOOST_TEST(std::fabs(batch[i] - one) <= 1e-12 * model->height_range,
+                 "x^ = " << xs[i] << ": " << batch[i] << " in the batch, " << one << " alone");
+    }
+  }
+  BOOST_TEST_MESSAGE(solution.zone_count() << " zones; largest difference " << largest);
+}
