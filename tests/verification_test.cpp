@@ -63,9 +63,8 @@ BOOST_AUTO_TEST_CASE(gaps_in_one_batch_equal_the_gap_point_by_point) {
   const Surface surface(WavinessParams{1, 10, 0, 1}, {{0.02, 32}});
   const auto& model = surface.model();
   const double P = 0.5;
-  const detail::SettleOutcome settled =
-      detail::settle(model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes),
-                     {400}, {});
+  const detail::SettleOutcome settled = detail::settle(
+      model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes), {400}, {});
   BOOST_TEST_REQUIRE(settled.contact.has_value(), "no contact: " << settled.failure);
   const detail::ContactSolution solution(model, *settled.contact);
   BOOST_TEST_REQUIRE(solution.zone_count() >= 3u);
