@@ -71,7 +71,7 @@ double ContactSolution::potential(double x) const { return fields_.potential(x, 
 double ContactSolution::gap(double x) const {
   x = std::fabs(x);
   if (zone_at(x) != zone_count()) return 0;
-  return 2 / surface_->E * (potential(x) - configuration_.C) - surface_->depth(x);
+  return gap_of(potential(x) - configuration_.C, surface_->depth(x));
 }
 
 void ContactSolution::gaps(const double* xs, double* gs, std::size_t count) const {
@@ -87,7 +87,7 @@ void ContactSolution::gaps(const double* xs, double* gs, std::size_t count) cons
   std::vector<double> depth(off.size());
   surface_->height_differences(off.data(), off.size(), surface_->top_angle, depth.data());
   const double offset = field.at_reference - configuration_.C;
-  for (std::size_t j = 0; j < off.size(); ++j) gs[at[j]] = 2 / surface_->E * (offset + field.difference[j]) - depth[j];
+  for (std::size_t j = 0; j < off.size(); ++j) gs[at[j]] = gap_of(offset + field.difference[j], depth[j]);
 }
 
 int ContactSolution::pressure_samples(std::size_t k) const {

@@ -61,6 +61,9 @@ class ContactSolution {
   double potential(double x) const;
 
  private:
+  // The gap (2/E*)(Psi - C) - depth from Psi - C and the depth y(x^) - y_top at one point.
+  double gap_of(double potential_less_C, double depth) const { return 2 / surface_->E * potential_less_C - depth; }
+
   std::shared_ptr<const SurfaceModel> surface_;
   Configuration configuration_;
   ZoneFields fields_;
