@@ -16,7 +16,10 @@ constexpr int most_iterations = 4000;
 // The pressure's relative change per iteration at the end. The grid errs by a cell anyway and
 // Newton's method replaces its digits: the seed needs the contact set and a pressure near
 // the grid's own. At 1e-9, the 102-zone case of bench/contact_bench.cpp took 215 iterations;
-// at 1e-6, 129, with the same zones.
+// at 1e-6, 129, with the same zones. At 1e-4 the bench's map took 10 % less CPU time, but
+// the seeds' contact sets were too rough for the campaign (scripts/contact_campaign.sh, seed
+// 1): 25 of the 192 sweeps it reached in 11 minutes stalled at the budget of 60 s, none at
+// 1e-6.
 constexpr double settled = 1e-6;
 
 // The displacement of the periodic half-plane under an even pressure constant on each of N
