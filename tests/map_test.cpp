@@ -244,6 +244,30 @@ BOOST_AUTO_TEST_CASE(threads_change_nothing) {
   }
 }
 
+// The lines are taken the finest roughness first, the highest first among equally fine ones:
+// on one thread they are handed over in that order.
+BOOST_AUTO_TEST_CASE(the_costliest_lines_come_first) {
+  wavecontact::MapGrid grid;
+  grid.waviness = {1.0, 10.0, 0.0, 1.0};
+  grid.m = {0};
+  grid.H2 = {0.01, 0.02};
+  grid.n = {8, 12};
+  grid.loads = {0.3};
+  grid.loads_are_ratios = true;
+  std::vector<std::pair<int, double>> taken;
+  wavecontact::MapOptions options;
+  options.threads = 1;
+  wavecontact::map_contacts(grid, options, {}, [&](const std::vector<wavecontact::MapPoint>& line) {
+    taken.emplace_back(line.front().n, line.front().H2);
+  });
+  const std::vector<std::pair<int, double>> expected{{12, 0.02}, {12, 0.01}, {8, 0.02}, {8, 0.01}};
+  BOOST_TEST_REQUIRE(taken.size() == expected.size());
+  for (std::size_t i = 0; i < taken.size(); ++i)
+    BOOST_TEST((taken[i] == expected[i]),
+               "line " << i << " taken: n = " << taken[i].first << ", H2 = " << taken[i].second
+                       << "; expected n = " << expected[i].first << ", H2 = " << expected[i].second);
+}
+
 // A file cut short (rows missing, the last one cut mid-row) is completed: the same rows as an
 // uninterrupted run, none twice.
 BOOST_AUTO_TEST_CASE(a_rerun_completes_a_file_cut_short) {

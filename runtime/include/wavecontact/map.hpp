@@ -70,8 +70,9 @@ void validate(const MapGrid& grid, const char* function);
 std::vector<MapPoint> solve_map_line(const MapGrid& grid, std::size_t line, const SolverOptions& options);
 
 // Solves every line for which skip(line) is false and hands its points to line_done, from
-// any thread but one call at a time. An exception of line_done (or of skip) stops the map:
-// the lines in flight finish, no other starts, and it is rethrown here.
+// any thread but one call at a time. The lines are taken the finest roughness first (the
+// highest harmonic n, then the largest sum of heights), the costliest as a rule. An exception of line_done (or of skip)
+// stops the map: the lines in flight finish, no other starts, and it is rethrown here.
 void map_contacts(const MapGrid& grid, const MapOptions& options, const std::function<bool(std::size_t)>& skip,
                   const std::function<void(const std::vector<MapPoint>&)>& line_done);
 
