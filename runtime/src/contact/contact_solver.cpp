@@ -31,7 +31,9 @@ constexpr double max_single_zone_harmonic = 8;  // the highest harmonic of a sur
 // and 0.02) such a start took 0.13 and 0.40 s against 0.45 and 0.68 s from the grid; on the
 // short campaign's six loads from 0.01 to full contact, 4.0 s against 1.0 s (one sweep of
 // 36 zones 11.8 s, settling through every zone a step opened). Any bound from 0.05 to 0.5 kept
-// both at their best.
+// both at their best. At 0.5 the bench's map of 10^4 points took 3 % less time (its lines'
+// third and fourth loads from the loads before), but 200 campaign sweeps of 20 loads (seed
+// 5, steps of 30 to 60 %) took 323 s instead of 317 s, three of them 1.4 to 5 times as long.
 constexpr double nearby_step = 0.25;
 
 // Whether a zone's series d_j = j G_j / h (j >= 1), of `count` terms from the transform G of its
