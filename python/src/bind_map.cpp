@@ -74,14 +74,14 @@ void bind_map(py::module_& m) {
       "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "harmonics"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
       "threads"_a, "Every point of the map on `threads` threads (0: one a core): the columns, by index.");
   m.def(
-      "_map_line_count",
+      "_map_lines_costliest_first",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,
          const Roughnesses& harmonics, std::vector<double> loads, bool ratios, double, double) {
         return grid_of(H1, b1, E, std::move(shapes), std::move(H2), std::move(n), harmonics, std::move(loads), ratios)
-            .line_count();
+            .lines_costliest_first();
       },
       "H1"_a, "b1"_a, "E"_a, "m"_a, "H2"_a, "n"_a, "harmonics"_a, "loads"_a, "ratios"_a, "tolerance"_a, "max_seconds"_a,
-      "The map's load lines, once its grid is checked.");
+      "The map's load lines, once its grid is checked, in the order the local map takes them.");
   m.def(
       "_solve_map_line",
       [](double H1, double b1, double E, std::vector<double> shapes, std::vector<double> H2, std::vector<int> n,

@@ -110,9 +110,13 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, harmonics=None, pa_over_pstar=None
     if client is None:
         return MapResult(axes, _wavecontact._map_contacts(**grid, threads=int(threads)))
     # Checked here, before any task: the same ValueError as the local run.
-    lines = _wavecontact._map_line_count(**grid)
-    futures = client.map(_solve_line, [grid] * lines, range(lines), pure=False)
-    parts = client.gather(futures)
+    # Submitted the costliest first, as the local map takes them (Client.map ranks its tasks
+    # in the order given), and put back in the order of the lines.
+    order = _wavecontact._map_lines_costliest_first(**grid)
+    futures = client.map(_solve_line, [grid] * len(order), order, pure=False)
+    parts = [None] * len(order)
+    for line, part in zip(order, client.gather(futures)):
+        parts[line] = part
     columns = [np.concatenate([np.asarray(part[c]) for part in parts]) for c in range(6)]
     columns.append([message for part in parts for message in part[6]])
     return MapResult(axes, columns)

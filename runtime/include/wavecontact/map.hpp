@@ -36,6 +36,10 @@ struct MapGrid {
   // The line's parameters.
   double line_m(std::size_t line) const;
   std::vector<Harmonic> line_roughness(std::size_t line) const;  // empty: the wave curve alone
+  // Every line, the finest roughness first (the highest harmonic n, then the largest sum of
+  // heights), else in index order: the costliest first as a rule, the order map_contacts
+  // takes them in.
+  std::vector<std::size_t> lines_costliest_first() const;
 };
 
 enum class MapStatus { solved, above_tolerance, beyond_reach };
@@ -70,9 +74,9 @@ void validate(const MapGrid& grid, const char* function);
 std::vector<MapPoint> solve_map_line(const MapGrid& grid, std::size_t line, const SolverOptions& options);
 
 // Solves every line for which skip(line) is false and hands its points to line_done, from
-// any thread but one call at a time. The lines are taken the finest roughness first (the
-// highest harmonic n, then the largest sum of heights), the costliest as a rule. An exception of line_done (or of skip)
-// stops the map: the lines in flight finish, no other starts, and it is rethrown here.
+// any thread but one call at a time, taking them in the order of lines_costliest_first. An
+// exception of line_done (or of skip) stops the map: the lines in flight finish, no other
+// starts, and it is rethrown here.
 void map_contacts(const MapGrid& grid, const MapOptions& options, const std::function<bool(std::size_t)>& skip,
                   const std::function<void(const std::vector<MapPoint>&)>& line_done);
 

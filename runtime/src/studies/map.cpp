@@ -55,27 +55,6 @@ void record_beyond_reach(MapPoint& p, const std::string& why) {
   p.message = why;
 }
 
-// The lines in the order they are taken: the finest roughness first, the highest of one
-// fineness first among those, else in index order. The zones, and with them a line's time,
-// grow with the roughness's n and height (the bench's map: 0.02 s a line at n = 8 against
-// 0.22 s at n = 32, H2 = 0.02); the longest lines started first leave no long one running
-// alone at the end (the bench's map, 2 cores: 3.59 -> 3.51 s wall).
-std::vector<std::size_t> costliest_first(const MapGrid& grid) {
-  std::vector<double> finest(grid.line_count()), height(grid.line_count());
-  std::vector<std::size_t> order(grid.line_count());
-  for (std::size_t line = 0; line < order.size(); ++line) {
-    order[line] = line;
-    for (const Harmonic& h : grid.line_roughness(line)) {
-      finest[line] = std::max(finest[line], static_cast<double>(h.n));
-      height[line] += std::fabs(h.H);
-    }
-  }
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return finest[a] != finest[b] ? finest[a] > finest[b] : height[a] > height[b];
-  });
-  return order;
-}
-
 }  // namespace
 
 std::size_t MapGrid::roughness_count() const {
@@ -91,6 +70,26 @@ std::vector<Harmonic> MapGrid::line_roughness(std::size_t line) const {
   if (!harmonics.empty()) return harmonics[r];
   if (H2.empty()) return {};
   return {{H2[r / n.size()], n[r % n.size()]}};
+}
+
+// The zones, and with them a line's time, grow with the roughness's n and height (the
+// bench's map: 0.02 s a line at n = 8 against 0.22 s at n = 32, H2 = 0.02); the longest
+// lines started first leave no long one running alone at the end (the bench's map, 2 cores:
+// 3.59 -> 3.51 s wall).
+std::vector<std::size_t> MapGrid::lines_costliest_first() const {
+  std::vector<double> finest(line_count()), height(line_count());
+  std::vector<std::size_t> order(line_count());
+  for (std::size_t line = 0; line < order.size(); ++line) {
+    order[line] = line;
+    for (const Harmonic& h : line_roughness(line)) {
+      finest[line] = std::max(finest[line], static_cast<double>(h.n));
+      height[line] += std::fabs(h.H);
+    }
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return finest[a] != finest[b] ? finest[a] > finest[b] : height[a] > height[b];
+  });
+  return order;
 }
 
 const char* to_string(MapStatus status) {
@@ -167,7 +166,7 @@ void map_contacts(const MapGrid& grid, const MapOptions& options, const std::fun
   const std::size_t lines = grid.line_count();
   const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(
       lines, options.threads > 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency())));
-  const std::vector<std::size_t> order = costliest_first(grid);
+  const std::vector<std::size_t> order = grid.lines_costliest_first();
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex done_mutex;
