@@ -109,9 +109,9 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, harmonics=None, pa_over_pstar=None
                 ratios if ratios.size else np.zeros(1, dtype=np.int64), None) + load_axes
     if client is None:
         return MapResult(axes, _wavecontact._map_contacts(**grid, threads=int(threads)))
-    # Checked here, before any task: the same ValueError as the local run.
-    # Submitted the costliest first, as the local map takes them (Client.map ranks its tasks
-    # in the order given), and put back in the order of the lines.
+    # The grid checked here, before any task (the same ValueError as the local run); the lines
+    # submitted the costliest first, as the local map takes them (Client.map ranks its tasks
+    # in the order given), and their parts put back in the order of the lines.
     order = _wavecontact._map_lines_costliest_first(**grid)
     futures = client.map(_solve_line, [grid] * len(order), order, pure=False)
     parts = [None] * len(order)
