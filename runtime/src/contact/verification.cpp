@@ -19,8 +19,10 @@ std::vector<std::pair<double, double>> local_minima(const std::vector<double>& x
   for (std::size_t i = 0; i < n; ++i) {
     const bool left = i == 0 || values[i] <= values[i - 1];
     const bool right = i + 1 == n || values[i] < values[i + 1];
+    if (!left || !right) continue;
+    // To the higher neighbour: the bottom lies at most that far below the sample.
     const double rise = std::max(i > 0 ? values[i - 1] : values[i], i + 1 < n ? values[i + 1] : values[i]) - values[i];
-    if (!left || !right || values[i] - rise > at_most) continue;
+    if (values[i] - rise > at_most) continue;
     std::pair<double, double> best{xs[i], values[i]};
     const double a = i > 0 ? xs[i - 1] : xs[i], b = i + 1 < n ? xs[i + 1] : xs[i];
     if (b > a) {
