@@ -4,7 +4,9 @@ points, the same tolerance (1e-8) and budget, timed on this machine in one run.
 
 - `wavecontact map`: one continuation a load line, the lines on every core;
 - a shell loop of `wavecontact solve`, one process a point (bash, serial, as users write it);
-- a serial Python loop of wavecontact.solve_contact, one call a point.
+- a serial Python loop of wavecontact.solve_contact, one call a point;
+- the shell loop's processes alone (`wavecontact solve --help`, the same pipe), the part of the
+  shell loop that no solver's speed changes.
 
 Every loop's contact fraction is checked against the map's (the continuation and a solve from
 scratch agree to the tolerance, not to the bit). Prints a table; with --docs, rewrites the
@@ -62,18 +64,27 @@ def run_map(cli, folder):
     return seconds, [fraction[i] for i in range(len(fraction))]
 
 
-def run_shell_loop(cli, folder):
-    script = os.path.join(folder, "loop.sh")
+def time_shell_script(folder, name, commands):
+    """Runs the commands as one bash script (stopping at a failure): its wall time and stdout."""
+    script = os.path.join(folder, name)
     with open(script, "w") as f:
-        f.write("set -e\n")
-        for h, n, r in points():
-            f.write(f"'{cli}' solve --H1 1 --b1 10 --E 1 --m {digits(M)} --H2 {digits(h)} --n {n} "
-                    f"--pa-over-pstar {digits(r)} --tolerance {digits(TOLERANCE)} | tail -n 1\n")
+        f.write("set -e\n" + "".join(command + "\n" for command in commands))
     start = time.perf_counter()
     out = subprocess.run(["bash", script], check=True, capture_output=True, text=True).stdout
-    seconds = time.perf_counter() - start
+    return time.perf_counter() - start, out
+
+
+def run_shell_loop(cli, folder):
+    seconds, out = time_shell_script(folder, "loop.sh", [
+        f"'{cli}' solve --H1 1 --b1 10 --E 1 --m {digits(M)} --H2 {digits(h)} --n {n} "
+        f"--pa-over-pstar {digits(r)} --tolerance {digits(TOLERANCE)} | tail -n 1" for h, n, r in points()])
     header = "P,pa,pa_over_pstar,zones,contact_fraction".split(",")
     return seconds, [float(line.split(",")[header.index("contact_fraction")]) for line in out.splitlines()]
+
+
+def run_shell_starts(cli, folder):
+    """The shell loop's processes without the solving: as many, each parsing its options and exiting."""
+    return time_shell_script(folder, "starts.sh", [f"'{cli}' solve --help | tail -n 1" for _ in points()])[0]
 
 
 def run_python_loop():
@@ -94,6 +105,7 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         map_seconds, reference = run_map(cli, folder)
         shell_seconds, shell = run_shell_loop(cli, folder)
+        starts_seconds = run_shell_starts(cli, folder)
     python_seconds, python = run_python_loop()
     count = len(reference)
     worst = {}
@@ -103,7 +115,8 @@ def main():
         assert worst[name] < 1e-5, (name, worst[name])  # the same contacts, to the tolerance
     rows = [("`wavecontact map`, every core", map_seconds, "the reference"),
             ("shell loop of `wavecontact solve`", shell_seconds, f"{worst['shell']:.1e}"),
-            ("Python loop of `wavecontact.solve_contact`", python_seconds, f"{worst['python']:.1e}")]
+            ("Python loop of `wavecontact.solve_contact`", python_seconds, f"{worst['python']:.1e}"),
+            ("the shell loop's processes alone (`wavecontact solve --help`)", starts_seconds, "nothing solved")]
     lines = [f"{count} points: m = 0, H2 0.002 to 0.02 mm (25, log) at n = {', '.join(map(str, N))}, pa/p* 0.01 "
              f"to 1 (100); tolerance {TOLERANCE:g}, on {os.cpu_count()} cores", "",
              "| run | wall time | per point | the map's speed-up | contact fraction, largest difference |",
