@@ -130,11 +130,18 @@ double run_end(const std::vector<double>& p, std::size_t j, int direction, bool 
   return x + direction * std::min(beyond, 0.9 * cell);
 }
 
+// The fewest cells a period. A seed of a roughness of n <= 32 needs no more than 1024 (32 a
+// shortest wavelength): at 4096, the bench's map of 10^4 points (n = 8 to 32) spent 1.3 of its
+// 6.6 s of CPU time in the seeds' iterations (60 on average, each two transforms), and took
+// 14 % less wall time at 1024 with the same contacts (fractions within 5e-11, the same zones);
+// single solves of its points 25 % less.
+constexpr int fewest_cells = 1024;
+
 }  // namespace
 
 int seed_cells(const SurfaceModel& surface) {
   const double wanted = 32 * (2 * pi) / (2 * surface.resolution);
-  int cells = 4096;
+  int cells = fewest_cells;
   while (cells < wanted && cells < (1 << 17)) cells *= 2;
   return cells;
 }

@@ -16,7 +16,7 @@ namespace wavecontact::detail {
 // (normalised), on `cells` cells a period (a power of two); C is left at 0.
 Configuration grid_seed(const SurfaceModel& surface, double P, int cells, int nodes);
 
-// The cells a period for the surface: 32 a shortest wavelength, 4096 at least, 2^17 at most.
+// The cells a period for the surface: 32 a shortest wavelength, 1024 at least, 2^17 at most.
 int seed_cells(const SurfaceModel& surface);
 
 }  // namespace wavecontact::detail
