@@ -18,6 +18,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy  # python/: the extension module, for Debian's python3
   python3-pytest python3-matplotlib       # tests/python, examples/sweep.py
   python3-distributed                     # wavecontact.map(client=...) on a Dask cluster, its tests
+  python3-xarray                          # MapResult.to_xarray(), its tests
 )
 
 missing=()

@@ -1,7 +1,7 @@
 # Type stubs of the wavecontact extension module (python/src/bind_*.cpp), for editors and
 # type checkers. tests/python/test_api.py checks that they name exactly what the module holds.
 from fractions import Fraction
-from typing import Sequence, overload
+from typing import Any, Sequence, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -297,7 +297,9 @@ class MapResult:
     max_p: np.ndarray
     error_estimate: np.ndarray
     message: np.ndarray
+    parameters: dict[str, float]
     def __getitem__(self, column: str) -> np.ndarray: ...
+    def to_xarray(self) -> Any: ...  # an xarray.Dataset, the axes as coordinates (python3-xarray)
 
 def map(H1: float, b1: float, E: float, *, m: float | Sequence[float] = ..., H2: float | Sequence[float] | None = ...,
         n: int | Sequence[int] | None = ..., harmonics: Sequence[Sequence[tuple[float, int]]] | None = ...,

@@ -6,6 +6,9 @@ import numpy as np
 from . import _wavecontact
 
 _STATUS = np.array(["solved", "above_tolerance", "beyond_reach"])
+_LONG_NAMES = {"status": "status", "zones": "zones per period", "contact_fraction": "contact fraction",
+               "p0": "pressure p(0)", "max_p": "largest pressure", "error_estimate": "error estimate",
+               "message": "why beyond reach"}
 
 
 class MapResult:
@@ -17,13 +20,15 @@ class MapResult:
     "above_tolerance", "beyond_reach"), ``zones`` (per period), ``contact_fraction``, ``p0``,
     ``max_p``, ``error_estimate`` (NaN beyond reach) and ``message`` (why, beyond reach). The
     axes are ``m``, ``H2`` and ``n`` or ``harmonics`` (a list of lists of (H, n)), and the load
-    as ``P`` and ``pa_over_pstar``. ``result["p0"]`` is ``result.p0``.
+    as ``P`` and ``pa_over_pstar``; ``parameters`` holds H1, b1, E, tolerance and max_seconds.
+    ``result["p0"]`` is ``result.p0``; ``result.to_xarray()`` is the same as an xarray Dataset.
     """
 
     columns = ("status", "zones", "contact_fraction", "p0", "max_p", "error_estimate", "message")
-    __slots__ = ("m", "H2", "n", "harmonics", "P", "pa_over_pstar", "dims") + columns
+    __slots__ = ("m", "H2", "n", "harmonics", "P", "pa_over_pstar", "dims", "parameters") + columns
 
-    def __init__(self, axes, columns):
+    def __init__(self, axes, columns, parameters):
+        self.parameters = parameters
         self.m, self.H2, self.n, self.harmonics, self.P, self.pa_over_pstar = axes
         if self.harmonics is None:
             self.dims = ("m", "H2", "n", "load")
@@ -45,6 +50,29 @@ class MapResult:
         if column not in self.columns:
             raise KeyError(f"wavecontact.MapResult: no column {column!r} (columns: {', '.join(self.columns)})")
         return getattr(self, column)
+
+    def to_xarray(self):
+        """The map as an ``xarray.Dataset``: a variable a column on ``dims``, the axes as
+        coordinates (``harmonics`` as strings ``"H:n+H:n"``, as the CLI writes them) and the
+        load dimension's two coordinates ``P`` and ``pa_over_pstar``
+        (``ds.swap_dims(load="pa_over_pstar")`` indexes by the latter). Needs xarray (Debian:
+        python3-xarray)."""
+        try:
+            import xarray
+        except ImportError:
+            raise ImportError("wavecontact.MapResult.to_xarray: needs xarray (Debian: apt install python3-xarray)") from None
+        coords = {"m": ("m", self.m, {"long_name": "shape m of the wave curve"})}
+        if self.harmonics is None:
+            coords["H2"] = ("H2", self.H2, {"long_name": "roughness height H2 (0: none)"})
+            coords["n"] = ("n", self.n, {"long_name": "wavelength ratio n = b1/b2 (0: none)"})
+        else:
+            names = ["+".join(f"{H!r}:{n}" for H, n in roughness) for roughness in self.harmonics]
+            coords["harmonics"] = ("harmonics", names, {"long_name": "roughness, H:n of each harmonic"})
+        coords["P"] = ("load", self.P, {"long_name": "load per unit length P"})
+        coords["pa_over_pstar"] = ("load", self.pa_over_pstar, {"long_name": "pa/p*"})
+        return xarray.Dataset(
+            {column: (self.dims, self[column], {"long_name": _LONG_NAMES[column]}) for column in self.columns},
+            coords=coords, attrs=dict(self.parameters))
 
     def __repr__(self):
         solved = int((self.status == "solved").sum())
@@ -100,6 +128,7 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, harmonics=None, pa_over_pstar=None
     grid = dict(H1=float(H1), b1=float(b1), E=float(E), m=shapes.tolist(), H2=heights.tolist(), n=ratios.tolist(),
                 harmonics=roughnesses, loads=loads.tolist(), ratios=P is None, tolerance=float(tolerance),
                 max_seconds=float(max_seconds))
+    parameters = {key: grid[key] for key in ("H1", "b1", "E", "tolerance", "max_seconds")}
     pstar_load = np.pi * float(E) * float(H1)
     load_axes = (loads * pstar_load if P is None else loads, loads if P is None else loads / pstar_load)
     if roughnesses:
@@ -108,7 +137,7 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, harmonics=None, pa_over_pstar=None
         axes = (shapes, heights if heights.size else np.zeros(1),
                 ratios if ratios.size else np.zeros(1, dtype=np.int64), None) + load_axes
     if client is None:
-        return MapResult(axes, _wavecontact._map_contacts(**grid, threads=int(threads)))
+        return MapResult(axes, _wavecontact._map_contacts(**grid, threads=int(threads)), parameters)
     # The grid checked here, before any task (the same ValueError as the local run); the lines
     # submitted the costliest first, as the local map takes them (Client.map ranks its tasks
     # in the order given), and their parts put back in the order of the lines.
@@ -119,4 +148,4 @@ def map(H1, b1, E, *, m=0.0, H2=None, n=None, harmonics=None, pa_over_pstar=None
         parts[line] = part
     columns = [np.concatenate([np.asarray(part[c]) for part in parts]) for c in range(6)]
     columns.append([message for part in parts for message in part[6]])
-    return MapResult(axes, columns)
+    return MapResult(axes, columns, parameters)

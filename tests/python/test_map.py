@@ -1,6 +1,8 @@
 """wavecontact.map: every point is solve_contact's on its load line, bit for bit, on this
 machine's threads (test_map_dask.py: on a Dask cluster); bad grids are refused before any
 work."""
+import sys
+
 import numpy as np
 import pytest
 
@@ -19,6 +21,7 @@ def assert_same_result(a, b):
         assert same(a[column], b[column]), column
     for axis in ("m", "H2", "n", "P", "pa_over_pstar"):
         assert same(getattr(a, axis), getattr(b, axis)), axis
+    assert a.parameters == b.parameters
 
 
 def test_points_are_solve_contact_on_their_line():
@@ -62,6 +65,36 @@ def test_a_list_of_roughnesses():
             contacts = wc.solve_contact(surface, np.array([0.3, 1.0]) * np.pi)
             assert [c.contact_fraction for c in contacts] == list(r.contact_fraction[i, j]), (m, roughness)
             assert [c.zones_per_period for c in contacts] == list(r.zones[i, j]), (m, roughness)
+
+
+def test_as_an_xarray_dataset():
+    r = wc.map(**dict(GRID, m=[0.0, 10.0]), tolerance=1e-8)
+    ds = r.to_xarray()
+    assert tuple(ds.dims) == r.dims and ds.attrs == dict(H1=1.0, b1=10.0, E=1.0, tolerance=1e-8, max_seconds=60.0)
+    for column in wc.MapResult.columns:
+        assert ds[column].dims == r.dims and same(ds[column].values, r[column]), column
+    for axis in ("m", "H2", "n", "P", "pa_over_pstar"):
+        assert same(ds[axis].values, getattr(r, axis)), axis
+    assert list(ds.pa_over_pstar.values) == GRID["pa_over_pstar"]
+    # Selection by the axes' values, the load by pa/p*.
+    point = ds.swap_dims(load="pa_over_pstar").sel(m=10.0, H2=0.05, n=16, pa_over_pstar=1.2)
+    assert point.contact_fraction.item() == r.contact_fraction[1, 1, 1, 2]
+    assert point.status.item() == r.status[1, 1, 1, 2]
+
+
+def test_roughness_lists_as_xarray_coordinates():
+    sets = [[(0.15, 6), (0.01, 64)], [(0.0375, 32)]]
+    r = wc.map(1.0, 10.0, 1.0, harmonics=sets, pa_over_pstar=[0.3], tolerance=1e-8)
+    ds = r.to_xarray()
+    assert list(ds.harmonics.values) == ["0.15:6+0.01:64", "0.0375:32"] and "H2" not in ds.coords
+    assert ds.zones.sel(harmonics="0.0375:32").values.tolist() == r.zones[:, 1].tolist()
+
+
+def test_xarray_missing_is_named(monkeypatch):
+    r = wc.map(1.0, 10.0, 1.0, P=[1.0])
+    monkeypatch.setitem(sys.modules, "xarray", None)  # import xarray now raises ImportError
+    with pytest.raises(ImportError, match="to_xarray: needs xarray.*python3-xarray"):
+        r.to_xarray()
 
 
 @pytest.mark.parametrize(
