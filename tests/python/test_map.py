@@ -1,6 +1,8 @@
 """wavecontact.map: every point is solve_contact's on its load line, bit for bit, on this
 machine's threads (test_map_dask.py: on a Dask cluster); bad grids are refused before any
 work."""
+import os
+import subprocess
 import sys
 
 import numpy as np
@@ -88,6 +90,24 @@ def test_roughness_lists_as_xarray_coordinates():
     ds = r.to_xarray()
     assert list(ds.harmonics.values) == ["0.15:6+0.01:64", "0.0375:32"] and "H2" not in ds.coords
     assert ds.zones.sel(harmonics="0.0375:32").values.tolist() == r.zones[:, 1].tolist()
+
+
+def test_the_cli_file_read_as_docs_maps_says(tmp_path):
+    # docs/maps.md, *The file*: the CSV of `wavecontact map` into pandas and xarray; every
+    # value the same as wavecontact.map's on the same grid (17 digits round-trip a double, and
+    # pandas reads them back exactly with float_precision="round_trip"; its default parser
+    # was 1 ulp off in 14 of these 24 contact fractions).
+    import pandas  # Debian: python3-pandas, with python3-xarray
+    out = tmp_path / "map.csv"
+    subprocess.run([os.environ["WAVECONTACT_CLI"], "map", "--H1", "1", "--b1", "10", "--E", "1", "--m", "0,10",
+                    "--H2", "0.02,0.05", "--n", "8,16", "--pa-over-pstar", "0.1,0.4,1.2", "--tolerance", "1e-8",
+                    "--out", str(out)], check=True, capture_output=True)
+    table = pandas.read_csv(out, skiprows=3, float_precision="round_trip")
+    ds = table.set_index(["m", "H2", "n", "pa_over_pstar"]).to_xarray()
+    r = wc.map(**dict(GRID, m=[0.0, 10.0]), tolerance=1e-8).to_xarray().swap_dims(load="pa_over_pstar")
+    for column in ("zones", "contact_fraction", "p0", "max_p", "error_estimate", "P"):
+        assert same(ds[column].values, r[column].broadcast_like(r.p0).values), column
+    assert (ds.status.values == r.status.values).all()
 
 
 def test_xarray_missing_is_named(monkeypatch):
