@@ -83,6 +83,7 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
     const double E = w.E;
     detail::Kink kink;
     kink.angle = pi / 2, kink.s = 0, kink.radius = 1 / m;
+    kink.windows = detail::shared_kink_windows({H1, m, E});
     kink.slope_jump = [=](double c) {
       return E / 2 * (generated::waviness_height_slope(H1, m, -c) - generated::waviness_height_slope(H1, m, c));
     };
