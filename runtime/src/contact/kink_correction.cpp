@@ -10,6 +10,7 @@
 
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "support/parallel.hpp"
 
 namespace wavecontact::detail {
 
@@ -86,11 +87,14 @@ std::shared_ptr<KinkWindows> shared_kink_windows(const std::vector<double>& key)
 
 KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_jump_(kink.slope_jump), r_(r) {
   const double s0 = kink.s;
-  // nu_k = Int q_k(t) ((t - s0) / r)^k dt, the moments of the far field.
-  for (int k = 0; k <= multipole_terms; ++k) {
-    const auto moment = [&](double t) { return density(t) * std::pow((t - s0) / r, k); };
-    moments_.push_back(integral(moment, s0 - r, s0) + integral(moment, s0, s0 + r));
-  }
+  // nu_k = Int q_k(t) ((t - s0) / r)^k dt, the moments of the far field. The moments, then the
+  // pieces, are each computed alone, on the threads: a window is most of a single solve's time
+  // on a surface with a kink (at m = 2, n = 16, pa/p* = 1: 57 % of 50 ms).
+  moments_.resize(multipole_terms + 1);
+  for_each_index(moments_.size(), 2, [&](std::size_t k) {
+    const auto moment = [&](double t) { return density(t) * std::pow((t - s0) / r, static_cast<int>(k)); };
+    moments_[k] = integral(moment, s0 - r, s0) + integral(moment, s0, s0 + r);
+  });
   load_ = moments_[0];
   // The potential on pieces between -1 and 1 graded geometrically towards s0 (where it goes
   // like (s - s0)^2 log|s - s0|) and away from the window's edges s0 -+ r (where it is only
@@ -105,10 +109,11 @@ KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_
   for (double& c : cuts) c = std::clamp(c, -1.0, 1.0);
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+  pieces_.resize(cuts.size() - 1);
+  for_each_index(pieces_.size(), 2, [&](std::size_t i) {
     const double lo = cuts[i], hi = cuts[i + 1];
-    if (!(hi > lo)) continue;
-    Piece piece{lo, hi, {}};
+    Piece& piece = pieces_[i];
+    piece = {lo, hi, {}};
     std::vector<double> values;  // at cos(pi i / n), i = 0 .. n
     double previous_tail = std::numeric_limits<double>::infinity();
     for (int n = 16;; n *= 2) {
@@ -131,8 +136,7 @@ KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_
       if (tail <= 1e-15 * scale || at_noise || n + 1 >= most_piece_nodes) break;
       previous_tail = tail;
     }
-    pieces_.push_back(std::move(piece));
-  }
+  });
 }
 
 namespace {
