@@ -66,8 +66,7 @@ std::shared_ptr<KinkWindows> shared_kink_windows(const std::vector<double>& key)
   // A map's load lines at one shape m and many roughnesses build each window once instead of
   // once a line (the 10^4 points of bench/map_vs_loops.py at m = 10: 3.24 -> 2.61 s, the same
   // rows), as long as its shapes are at most this many: a map takes its lines roughness by
-  // roughness.
-  // A window holds about 10 KB (m = 10: 22 to 32 pieces, 700 to 1100 coefficients).
+  // roughness. A window holds about 10 KB (m = 10: 22 to 32 pieces, 700 to 1100 coefficients).
   constexpr std::size_t kept_kinks = 32;
   static std::mutex mutex;
   static std::vector<std::pair<std::vector<double>, std::shared_ptr<KinkWindows>>> recent;  // the newest last

@@ -14,7 +14,7 @@ struct KinkWindows;
 std::shared_ptr<KinkWindows> make_kink_windows();
 // The windows of every kink whose position and slope jump `key` determines, shared by the
 // surfaces that have it (those of one waviness and any roughness: the roughness is analytic
-// across the kink and leaves its slope jump as it is). The last few keys' windows are kept.
+// across the kink and leaves its slope jump as it is). The last 32 keys' windows are kept.
 std::shared_ptr<KinkWindows> shared_kink_windows(const std::vector<double>& key);
 
 // A point x^0 where the profile changes branch (eq. 2's |cos x^| at x^ = pi/2, a profile built
