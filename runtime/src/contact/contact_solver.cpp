@@ -137,10 +137,10 @@ std::optional<Configuration> ContactSolver::single_zone(double P) const {
   // Tried on a surface without short wavelengths (a waviness alone), at its top.
   if (surface_->top_angle != 0 || surface_->resolution < pi / max_single_zone_harmonic) return std::nullopt;
   // Westergaard's sine of the top's curvature: P = pi E* kappa sin^2(a/2) (Hertz's for small
-  // a), taken when a few changes of zones settle it. (Kept short of the kink, the guess of the
-  // flat top m = 10 saved the zone across the kink that a tension refuses at n = 8: a Python
-  // loop there 5.65 -> 1.63 ms a point; but from a fresh process a zone that does cross the
-  // kink then built its windows as its end crossed: m = 10 at pa/p* = 2 22 -> 68 ms. Left out.)
+  // a), taken when a few changes of zones settle it. (A guess capped short of the kink spares
+  // the flat top m = 10 at n = 8 a zone across the kink that a tension then refuses: a Python
+  // loop there 5.65 -> 1.63 ms a point. But from a fresh process, a zone that does cross the
+  // kink builds windows as its end crosses: m = 10 at pa/p* = 2 22 -> 68 ms. Left out.)
   const double ratio = P / (pi * surface_->E * surface_->top_curvature);
   const double w = ratio < 0.9 ? 2 * std::asin(std::sqrt(ratio)) : 0.8 * pi;
   Configuration c;
