@@ -53,8 +53,8 @@ class MapResult:
 
     def to_xarray(self):
         """The map as an ``xarray.Dataset``: a variable a column on ``dims``, the axes as
-        coordinates (``harmonics`` as strings ``"H:n+H:n"``, as the CLI writes them) and the
-        load dimension's two coordinates ``P`` and ``pa_over_pstar``
+        coordinates (``harmonics`` as strings ``"H:n+H:n"``, the syntax of the CLI's
+        --harmonics) and the load dimension's two coordinates ``P`` and ``pa_over_pstar``
         (``ds.swap_dims(load="pa_over_pstar")`` indexes by the latter). Needs xarray (Debian:
         python3-xarray)."""
         try:

@@ -72,16 +72,16 @@ std::shared_ptr<KinkWindows> shared_kink_windows(const std::vector<double>& key)
   static std::vector<std::pair<std::vector<double>, std::shared_ptr<KinkWindows>>> recent;  // the newest last
   const std::lock_guard<std::mutex> lock(mutex);
   const auto found = std::find_if(recent.begin(), recent.end(), [&](const auto& entry) { return entry.first == key; });
-  std::pair<std::vector<double>, std::shared_ptr<KinkWindows>> entry{key, nullptr};
+  std::shared_ptr<KinkWindows> windows;
   if (found != recent.end()) {
-    entry = std::move(*found);
+    windows = std::move(found->second);
     recent.erase(found);
   } else {
-    entry.second = make_kink_windows();
+    windows = make_kink_windows();
     if (recent.size() == kept_kinks) recent.erase(recent.begin());
   }
-  recent.push_back(entry);
-  return entry.second;
+  recent.emplace_back(key, windows);
+  return windows;
 }
 
 KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_jump_(kink.slope_jump), r_(r) {
