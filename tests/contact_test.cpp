@@ -81,13 +81,18 @@ BOOST_AUTO_TEST_CASE(wave_curve_single_zone_is_the_closed_form) {
 // quadrature (docs/mathematics.md fact 8). For m = 2 the valley closes at a = 0.5015 b1: docs/mathematics.md's check
 // value at a = 0.6 b1 (p(0) = 0.888) is a single zone of the family that interpenetrates,
 // and the contact at its load has two zones.
+// A zone across the kink at b1/2 ends where rounding decides it to a few 1e-12 pi: scaling
+// its kink correction's potential by 1 +- 1e-15 to 1 +- 1.6e-14 moved the end at m = 0.5,
+// a = 0.9 pi anywhere within 2.8e-12 pi of a, and at m = 1, a = 0.58 pi within 1.1e-12 pi
+// (2026-11-29; so did quadrature rules for that potential equally accurate, to 4.1e-12 pi).
 BOOST_AUTO_TEST_CASE(wave_curve_single_zone_beyond_half_period) {
   for (const auto& [m, r] : std::vector<std::pair<double, double>>{{0.5, 0.7}, {0.5, 0.9}, {1.0, 0.58}}) {
     const WavinessParams w{1.0, pi, m, 1.0};
     const double a = r * pi, P = load(w, a);
     const Contact c = solve_contact(Surface(w), P);
     BOOST_TEST_REQUIRE(c.zones_per_period() == 1, "m = " << m);
-    BOOST_TEST(std::fabs(c.zones()[0].x_end - a) < 1e-12 * pi, "m = " << m << ", a = " << a);
+    const double end = std::fabs(c.zones()[0].x_end - a);
+    BOOST_TEST(end < 1e-11 * pi, "m = " << m << ", a = " << a << ": end off by " << end / pi << " pi");
     BOOST_TEST(pressure_difference(c, a, [&](double x) { return pressure(w, a, x); }) < 1e-10,
                "m = " << m << ", a = " << a);
   }
