@@ -6,10 +6,9 @@
 #include <map>
 #include <mutex>
 
-#include <boost/math/quadrature/tanh_sinh.hpp>
-
 #include "chebyshev.hpp"
 #include "constants.hpp"
+#include "log_end_quadrature.hpp"
 #include "support/parallel.hpp"
 
 namespace wavecontact::detail {
@@ -43,13 +42,6 @@ double window(double u) {
     sum += term;
   }
   return w4 * w4 * sum;
-}
-
-// Int_a^b f, f with integrable (logarithmic) singularities at a and b.
-template <class F>
-double integral(const F& f, double a, double b) {
-  thread_local boost::math::quadrature::tanh_sinh<double> rule(12);  // integrate() is not const
-  return b > a ? rule.integrate(f, a, b, 1e-15) : 0.0;
 }
 
 }  // namespace
@@ -92,7 +84,7 @@ KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_
   moments_.resize(multipole_terms + 1);
   for_each_index(moments_.size(), 2, [&](std::size_t k) {
     const auto moment = [&](double t) { return density(t) * std::pow((t - s0) / r, static_cast<int>(k)); };
-    moments_[k] = integral(moment, s0 - r, s0) + integral(moment, s0, s0 + r);
+    moments_[k] = log_end_integral(moment, s0 - r, s0) + log_end_integral(moment, s0, s0 + r);
   });
   load_ = moments_[0];
   // The potential on pieces between -1 and 1 graded geometrically towards s0 (where it goes
@@ -201,7 +193,7 @@ double KinkCorrection::direct_potential(double s) const {
   if (s > lo && s < hi && s != s0_) cuts.push_back(s);
   std::sort(cuts.begin(), cuts.end());
   double sum = 0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) sum += integral(f, cuts[i], cuts[i + 1]);
+  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) sum += log_end_integral(f, cuts[i], cuts[i + 1]);
   return -sum / pi;
 }
 

@@ -8,13 +8,13 @@
 // W a polynomial of degree 24, 1 - O(u^10) at 0 and zero to order 8 at |u| = 1 (gentle: a
 // steep window would need as many nodes as the singularity it removes), r within the zone and
 // within the branches' analyticity. Its potential is smooth on either side of s0 and of the
-// window's edges: it is computed once per window (tanh-sinh quadrature near the window, its
-// moments' expansion beyond twice its radius) at the Chebyshev nodes of the pieces of [-1, 1]
-// between them, and interpolated. A kink closer to an end than a millionth of the zone is left
-// alone: the other branch holds on a sliver there, whose effect (about the sliver's width to
-// the power 3.5: 3e-9 at 1.4e-5) is near the contact's rounding, while a window that narrow
-// would need hundreds of thousands of nodes; nearer than a ten-thousandth, the window needs up
-// to most_kinked_nodes (active_set.hpp).
+// window's edges: it is computed once per window (near the window by Gauss-Legendre quadrature
+// after a sigmoidal substitution, beyond twice its radius by its moments' expansion) at the
+// Chebyshev nodes of the pieces of [-1, 1] between them, and interpolated. A kink closer to an
+// end than a millionth of the zone is left alone: the other branch holds on a sliver there,
+// whose effect (about the sliver's width to the power 3.5: 3e-9 at 1.4e-5) is near the
+// contact's rounding, while a window that narrow would need hundreds of thousands of nodes;
+// nearer than a ten-thousandth, the window needs up to most_kinked_nodes (active_set.hpp).
 #pragma once
 
 #include <cmath>
