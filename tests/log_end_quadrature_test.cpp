@@ -13,8 +13,8 @@
 
 #include "contact/log_end_quadrature.hpp"
 
-using wavecontact::detail::log_end_integral;
 using boost::math::double_constants::pi;
+using wavecontact::detail::log_end_integral;
 
 namespace {
 
@@ -33,30 +33,31 @@ double error_in_eps(const std::function<double(double)>& f, double a, double b, 
   return std::fabs(got - expected) / (eps * size);
 }
 
-void check(const std::string& what, const std::function<double(double)>& f, double a, double b, double expected,
-           double bound) {
+// f last, so that its lambda closes the call.
+void check(const std::string& what, double a, double b, double expected, double bound,
+           const std::function<double(double)>& f) {
   const double error = error_in_eps(f, a, b, expected);
   BOOST_TEST_MESSAGE(what << ": " << error << " eps");
-  BOOST_TEST(error < bound, what << ": got " << log_end_integral(f, a, b) << ", expected " << expected << ", "
-                                 << error << " eps of Int |f|");
+  BOOST_TEST(error < bound, what << ": got " << log_end_integral(f, a, b) << ", expected " << expected << ", " << error
+                                 << " eps of Int |f|");
 }
 
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(logarithms_at_the_ends) {
-  check("Int_0^1 log t", [](double t) { return std::log(t); }, 0, 1, -1, 8);
-  check("Int_0^1 log^2 t", [](double t) { return std::log(t) * std::log(t); }, 0, 1, 2, 8);
-  check("Int_0^1 log t log(1 - t)", [](double t) { return t < 1 ? std::log(t) * std::log1p(-t) : 0.0; }, 0, 1,
-        2 - pi * pi / 6, 8);
+  check("Int_0^1 log t", 0, 1, -1, 8, [](double t) { return std::log(t); });
+  check("Int_0^1 log^2 t", 0, 1, 2, 8, [](double t) { return std::log(t) * std::log(t); });
+  check("Int_0^1 log t log(1 - t)", 0, 1, 2 - pi * pi / 6, 8,
+        [](double t) { return t < 1 ? std::log(t) * std::log1p(-t) : 0.0; });
   // Int_0^1 t^k log t = -1/(k + 1)^2 and Int_0^1 t^k log(1 - t) = -H_(k+1)/(k + 1): a smooth
   // factor of growing degree at either end, as a window's density times a logarithm.
   double harmonic = 0;
   for (int k = 0; k <= 24; ++k) {
     harmonic += 1.0 / (k + 1);
-    check("Int_0^1 t^" + std::to_string(k) + " log t", [k](double t) { return std::pow(t, k) * std::log(t); }, 0, 1,
-          -1.0 / ((k + 1) * (k + 1)), 16);
-    check("Int_0^1 t^" + std::to_string(k) + " log(1 - t)",
-          [k](double t) { return t < 1 ? std::pow(t, k) * std::log1p(-t) : 0.0; }, 0, 1, -harmonic / (k + 1), 16);
+    check("Int_0^1 t^" + std::to_string(k) + " log t", 0, 1, -1.0 / ((k + 1) * (k + 1)), 16,
+          [k](double t) { return std::pow(t, k) * std::log(t); });
+    check("Int_0^1 t^" + std::to_string(k) + " log(1 - t)", 0, 1, -harmonic / (k + 1), 16,
+          [k](double t) { return t < 1 ? std::pow(t, k) * std::log1p(-t) : 0.0; });
   }
 }
 
@@ -69,9 +70,9 @@ BOOST_AUTO_TEST_CASE(logarithms_next_to_the_ends) {
   for (int e = 0; e <= 17; ++e) {
     const double d = std::pow(10.0, -e), expected = (1 + d) * std::log1p(d) - d * std::log(d) - 1;
     const double bound = e <= 7 || e >= 15 ? 16 : 128;
-    check("Int_0^1 log(t + " + format(d) + ")", [d](double t) { return std::log(t + d); }, 0, 1, expected, bound);
-    check("Int_0^1 log(1 + " + format(d) + " - t)", [d](double t) { return std::log((1 - t) + d); }, 0, 1, expected,
-          bound);
+    check("Int_0^1 log(t + " + format(d) + ")", 0, 1, expected, bound, [d](double t) { return std::log(t + d); });
+    check("Int_0^1 log(1 + " + format(d) + " - t)", 0, 1, expected, bound,
+          [d](double t) { return std::log((1 - t) + d); });
   }
 }
 
@@ -83,14 +84,14 @@ BOOST_AUTO_TEST_CASE(logarithms_next_to_the_ends) {
 BOOST_AUTO_TEST_CASE(any_stretch) {
   for (double length : {2.0, 1e-3, 1e-8, 1e-12}) {
     const double expected = length * (std::log(length) - 1);
-    check("Int_0^L log t, L = " + format(length), [](double t) { return std::log(t); }, 0, length, expected, 16);
-    check("Int_-L^0 log(-t), L = " + format(length), [](double t) { return std::log(-t); }, -length, 0, expected, 16);
+    check("Int_0^L log t, L = " + format(length), 0, length, expected, 16, [](double t) { return std::log(t); });
+    check("Int_-L^0 log(-t), L = " + format(length), -length, 0, expected, 16, [](double t) { return std::log(-t); });
   }
   for (double a : {-1.0, 0.3}) {
     for (double length : {2.0, 1e-3}) {
-      check("Int log(t - a), a = " + format(a) + ", L = " + format(length),
-            [a](double t) { return t > a ? std::log(t - a) : 0.0; }, a, a + length, length * (std::log(length) - 1),
-            length > 1 ? 16 : 1024);
+      check("Int log(t - a), a = " + format(a) + ", L = " + format(length), a, a + length,
+            length * (std::log(length) - 1), length > 1 ? 16 : 1024,
+            [a](double t) { return t > a ? std::log(t - a) : 0.0; });
     }
   }
   BOOST_TEST(log_end_integral([](double) { return 1.0; }, 1, 1) == 0);
