@@ -6,10 +6,10 @@
 // v = w^5 / (w^5 + (1 - w)^5), under which such an integrand vanishes like w^4 log w at the
 // ends. v is steep at w = 1/2 (its complex poles lie near it), so w's interval is cut into six
 // panels of 30 points: 180 fixed points, no adaptation. Its error, in eps of Int |f|
-// (tests/log_end_quadrature_test.cpp): up to 12 with a logarithm at an end times a polynomial
-// up to degree 24; up to 16 with one a distance d beyond an end, d from the stretch's length
-// down to 1e-7 of it, but up to 113 from 1e-8 to 1e-13 (the windows take d down to about
-// 3e-7). On the wave curve's windows (m = 0.2 to 32.8) the potentials and the moments lie within
+// (tests/log_end_quadrature_test.cpp): up to 12.3 with a logarithm at an end times a
+// polynomial up to degree 24; up to 2.3 with one a distance d beyond an end, d from the
+// stretch's length down to 1e-7 of it, but up to 105 from 1e-8 to 1e-13 (the windows take d
+// down to about 3e-7). On the wave curve's windows (m = 0.2 to 32.8) the potentials and the moments lie within
 // 4.1e-15 of Int |f| from the rule on 40 panels, as tanh-sinh's at a tolerance of 1e-15 did,
 // which they were computed by before: a map over 40 shapes took 3.2 s instead of 8.0 s, where
 // the windows had taken 64 % (2026-11-29).
