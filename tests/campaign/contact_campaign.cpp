@@ -42,7 +42,9 @@ Sweep draw(const Settings& s, int k) {
   std::uniform_real_distribution<double> unit(0, 1);
   Sweep w;
   w.m = unit(random) < 0.25 ? 0 : 35 * unit(random);
-  const int count = 1 + static_cast<int>(4 * unit(random));
+  // No more harmonics than there are even n up to max_n (--max-n 4 drew three of n = 2 and 4,
+  // and searched for the third for ever).
+  const int count = std::min(1 + static_cast<int>(4 * unit(random)), s.max_n / 2);
   double slopes = 0;
   while (static_cast<int>(w.harmonics.size()) < count) {
     const int n = 2 * static_cast<int>(std::lround(std::exp(unit(random) * std::log(s.max_n / 2.0))));
@@ -99,6 +101,10 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "contact_campaign: unknown option %s\n", key.c_str());
       return 2;
     }
+  }
+  if (s.max_n < 2 || s.loads < 2) {
+    std::fprintf(stderr, "contact_campaign: --max-n %d and --loads %d must be at least 2\n", s.max_n, s.loads);
+    return 2;
   }
   int stalls = 0, violations = 0, missed = 0, contacts = 0, most_zones = 0;
   double slowest = 0, total = 0;
