@@ -2,11 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <limits>
-#include <unordered_set>
 
 #include "constants.hpp"
 #include "kink_correction.hpp"
@@ -65,10 +62,12 @@ bool crowded(const Configuration& c) {
   return false;
 }
 
-bool fit_nodes(Configuration& c, const SurfaceModel& surface, bool near_neighbours = false) {
+bool fit_nodes(Configuration& c, const SurfaceModel& surface, bool near_neighbours = false,
+               const std::function<bool(const ZoneUnknowns&)>& where = {}) {
   bool grown = false;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
     ZoneUnknowns& z = c.zones[k];
+    if (where && !where(z)) continue;
     std::size_t needed = width_nodes(z, surface);
     if (near_neighbours) {
       // The count bounded before its conversion.
@@ -149,22 +148,34 @@ void open_zones(Configuration& c, const std::vector<Penetration>& penetrations, 
 
 // Each zone with a negative pressure is cut at every such point: the pieces around the cuts,
 // less a margin, those long enough kept (a piece at the top or the valley keeps it), each
-// with its share of the zone's nodes.
+// with its share of the zone's nodes. The margin is a tenth of the zone's width or of the
+// resolution, or where the pressure's dip is narrower and well inside the zone (a tenth of
+// its distance from a free end), the half-width of the stretch where its parabola (depth and
+// curvature at the minimum) is below 0. (Next to an end, that parabola's 7e-8 cut the zone
+// back by as little, and the same tension came back 400 times: the wave curve m = 20 with
+// n = 22, 14 and 2, campaign seed 25, sweep 85 with 32 loads.) Near full contact a dip of
+// 5e-5 of the largest pressure next to the kink of the wave curve m = 17.6 (n = 6 and 10,
+// campaign seed 5, sweep 127 with 64 loads, --max-n 32) opens a gap of 6.3e-4, which Newton's
+// method found from a cut of up to 4e-3 on either side and not from the tenth of the
+// resolution, 0.031: it crept towards two zones 2e-4 short of the contact's and stalled.
 void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double resolution) {
   for (std::size_t k = c.zones.size(); k-- > 0;) {
-    std::vector<double> cuts;
+    const ZoneUnknowns zone = c.zones[k];
+    const double a = zone.geometry.a, b = zone.geometry.b, scale = std::min(b - a, resolution);
+    std::vector<std::pair<double, double>> cuts;  // where, and the margin left out on each side
     for (const Tension& t : tensions) {
-      if (t.zone == k) cuts.push_back(t.x);
+      if (t.zone != k) continue;
+      // A dip next to a free end is no parabola (the pressure goes like a root there).
+      const double from_ends = std::min(a > 0 ? t.x - a : pi, b < pi ? b - t.x : pi);
+      const double below = t.curvature > 0 ? std::sqrt(2 * -t.pressure / t.curvature) : scale;
+      cuts.emplace_back(t.x, below < 0.1 * from_ends ? std::min(cut_margin * scale, below) : cut_margin * scale);
     }
     if (cuts.empty()) continue;
     std::sort(cuts.begin(), cuts.end());
-    const ZoneUnknowns zone = c.zones[k];
-    const double a = zone.geometry.a, b = zone.geometry.b, scale = std::min(b - a, resolution);
-    const double margin = cut_margin * scale;
     c.zones.erase(c.zones.begin() + static_cast<std::ptrdiff_t>(k));
     double lo = a;
-    cuts.push_back(b + margin);  // the last piece ends at b
-    for (double x : cuts) {
+    cuts.emplace_back(b, 0.0);  // the last piece ends at b
+    for (const auto& [x, margin] : cuts) {
       const double hi = std::min(x - margin, b);
       if (hi - lo > shortest_piece * scale) {
         const auto share = static_cast<std::size_t>(std::ceil(zone.d.size() * (hi - lo) / (b - a)));
@@ -189,23 +200,6 @@ void restore_ends(Configuration& c, const std::vector<ZoneGeometry>& start) {
     if (start[k].top() != c.zones[k].geometry.top() || start[k].valley() != c.zones[k].geometry.valley()) return;
   }
   for (std::size_t k = 0; k < c.zones.size(); ++k) c.zones[k].geometry = start[k];
-}
-
-// Every bit of a configuration (ends, coefficients, windows, C), folded by FNV-1a: settle's
-// course from a configuration it resumes from after a change of zones depends on nothing else.
-std::uint64_t fingerprint(const Configuration& c) {
-  std::uint64_t hash = 14695981039346656037ULL;
-  const auto fold = [&](double v) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    for (int byte = 0; byte < 8; ++byte) hash = (hash ^ ((bits >> (8 * byte)) & 0xff)) * 1099511628211ULL;
-  };
-  for (const ZoneUnknowns& z : c.zones) {
-    fold(z.geometry.a), fold(z.geometry.b), fold(z.kink_window);
-    for (double d : z.d) fold(d);
-  }
-  fold(c.C);
-  return hash;
 }
 
 }  // namespace
@@ -271,6 +265,17 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
     return std::any_of(surface.kinks.begin(), surface.kinks.end(),
                        [&](const Kink& k) { return k.angle > z.geometry.a && k.angle < z.geometry.b; });
   };
+  // A zone across a kink with under half the nodes its window asks for (width_nodes): a
+  // window chosen during Newton's method, as an end crossed the kink, came with the nodes the
+  // zone had without it. The wave curve m = 1.04 with n = 16 and 2, continued to P = 2.7275
+  // (campaign seed 5, sweep 43 with 64 loads, --max-n 32), converged on 48 nodes with the end
+  // 8e-5 past the kink, and the refinement's changes grew from 3.2e-8 to 3.2e-7 at 192: an
+  // estimate 32 times the tolerance, where the window's 4096 nodes give 2.8e-10. (Any zone
+  // short of them, 4059 of 4096 after a cut, regrew, and its tension at the end came back
+  // 400 times: campaign seed 25, sweep 85 with 32 loads, --max-n 32.)
+  const auto short_of_its_window = [&](const ZoneUnknowns& z) {
+    return kinked(z) && 2 * z.d.size() < std::min<std::size_t>(most_working_nodes, width_nodes(z, surface));
+  };
   // The coefficients made consistent with the zones first, for the guess and after every
   // change of zones: Newton's method then starts with the collocation rows met and moves the
   // ends (from one block-Jacobi sweep alone, a zone just cut or merged may start so far off
@@ -290,11 +295,6 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   // such a growth therefore starts again from those ends, with the grown nodes.
   std::vector<ZoneGeometry> start = geometries(c);
   bool grown_after_converging = false;
-  // The configurations resumed from after each change of zones: one met again starts the same
-  // cycle of changes again, to the last of the limit (campaign seed 13, sweep 119 with 16
-  // loads, --max-n 8: the full zone's tension next to the kink cut it, Newton's method failed
-  // on the cut, the gap closed, the tension showed again; 100 times, 12 s).
-  std::unordered_set<std::uint64_t> resumed_from{fingerprint(c)};
   for (int change = 0; change <= limits.changes; ++change) {
     if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
     fit_nodes(c, surface);
@@ -323,6 +323,8 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       zones_changed = true;
     } else if (!system.windows_fit(c)) {
       continue;  // a kink window chosen again
+    } else if (fit_nodes(c, surface, false, short_of_its_window)) {
+      continue;
     } else if (!crowded(c) && grow_nodes(c, surface, working_tail)) {
       grown_after_converging = true;
     } else {
@@ -341,7 +343,8 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
                      v.tensions.size(), v.tensions.size() == 1 ? "" : "s", v.penetrations.size(),
                      v.penetrations.size() == 1 ? "" : "s", v.lowest_gap, v.x_of_lowest_gap);
         for (const Tension& t : v.tensions) {
-          std::fprintf(stderr, "wavecontact trace:   tension %.3g at %.9g in zone %zu\n", t.pressure, t.x, t.zone);
+          std::fprintf(stderr, "wavecontact trace:   tension %.3g at %.9g in zone %zu (curvature %.3g)\n", t.pressure,
+                       t.x, t.zone, t.curvature);
         }
       }
       if (v.tensions.empty() && v.penetrations.empty()) {
@@ -355,14 +358,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
       }
     }
     consistent(c);
-    if (zones_changed) {
-      start = geometries(c), grown_after_converging = false;
-      if (!resumed_from.insert(fingerprint(c)).second) {
-        return {std::nullopt, "the zones went round a cycle of changes back to " + std::to_string(c.zones.size()) +
-                                  (c.zones.size() == 1 ? " zone" : " zones") + " after " + std::to_string(change + 1) +
-                                  " changes"};
-      }
-    }
+    if (zones_changed) start = geometries(c), grown_after_converging = false;
   }
   return {std::nullopt, "the zones still changed after " + std::to_string(limits.changes) + " changes"};
 }

@@ -122,7 +122,7 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
     if (z.highest > v.highest_pressure) v.highest_pressure = z.highest, v.x_of_highest_pressure = z.x_of_highest;
     for (const auto& [x, value] : z.minima) {
       if (value < v.lowest_pressure) v.lowest_pressure = value, v.x_of_lowest_pressure = x;
-      if (value < 0) v.tensions.push_back({k, x, value});
+      if (value < 0) v.tensions.push_back({k, x, value, 0.0});
     }
   }
   const double allowed = -pressure_tolerance * v.highest_pressure;
@@ -130,6 +130,12 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
       std::remove_if(v.tensions.begin(), v.tensions.end(), [&](const Tension& t) { return !(t.pressure < allowed); }),
       v.tensions.end());
   v.pressure_ok = v.tensions.empty();
+  for (Tension& t : v.tensions) {
+    const ZoneGeometry& zone = s.zone(t.zone);
+    const double h = std::min({1e-3 * s.surface().resolution, (t.x - zone.a) / 2, (zone.b - t.x) / 2});
+    const double curvature = h > 0 ? (s.pressure(t.x + h) - 2 * t.pressure + s.pressure(t.x - h)) / (h * h) : 0.0;
+    t.curvature = curvature > 0 ? curvature : 0.0;
+  }
   for (const GapCheck& g : gap_checks) {
     for (const auto& [x, value] : g.minima) {
       if (value < v.lowest_gap) v.lowest_gap = value, v.x_of_lowest_gap = x;

@@ -20,6 +20,7 @@ struct Penetration {
 struct Tension {
   std::size_t zone;  // where the pressure has a negative local minimum
   double x, pressure;
+  double curvature;  // d^2 p / dx^2 there (0 if not positive, or too near an end to tell)
 };
 
 struct Verification {

@@ -122,8 +122,9 @@ class ZoneSystem {
   // Each kink correction's window chosen for the zones as they are.
   void choose_windows(Configuration& c) const;
 
-  // Whether every zone's kink window lies within the zone (ends move during a solve; a
-  // window that no longer fits is chosen again by the next).
+  // Whether every zone's kink window lies within the zone and is at least a quarter of the
+  // one chosen for it as it is now (ends move during a solve; a window that no longer fits,
+  // or that the zone has far outgrown, is chosen again by the next).
   bool windows_fit(const Configuration& c) const;
 
   // The scaled residuals of c (for tests and for the solver's checks).
