@@ -50,13 +50,15 @@ BOOST_AUTO_TEST_CASE(logarithms_at_the_ends) {
   check("Int_0^1 log t log(1 - t)", 0, 1, 2 - pi * pi / 6, 8,
         [](double t) { return t < 1 ? std::log(t) * std::log1p(-t) : 0.0; });
   // Int_0^1 t^k log t = -1/(k + 1)^2 and Int_0^1 t^k log(1 - t) = -H_(k+1)/(k + 1): a smooth
-  // factor of growing degree at either end, as a window's density times a logarithm.
+  // factor of growing degree at either end, as a window's density (degree 48) times a
+  // logarithm. Beyond degree 24 the second errs by up to 19.9 eps.
   double harmonic = 0;
-  for (int k = 0; k <= 24; ++k) {
+  for (int k = 0; k <= 48; ++k) {
     harmonic += 1.0 / (k + 1);
-    check("Int_0^1 t^" + std::to_string(k) + " log t", 0, 1, -1.0 / ((k + 1) * (k + 1)), 16,
+    const double bound = k <= 24 ? 16 : 24;
+    check("Int_0^1 t^" + std::to_string(k) + " log t", 0, 1, -1.0 / ((k + 1) * (k + 1)), bound,
           [k](double t) { return std::pow(t, k) * std::log(t); });
-    check("Int_0^1 t^" + std::to_string(k) + " log(1 - t)", 0, 1, -harmonic / (k + 1), 16,
+    check("Int_0^1 t^" + std::to_string(k) + " log(1 - t)", 0, 1, -harmonic / (k + 1), bound,
           [k](double t) { return t < 1 ? std::pow(t, k) * std::log1p(-t) : 0.0; });
   }
 }

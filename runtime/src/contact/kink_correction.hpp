@@ -5,8 +5,9 @@
 // The density then holds -(1/pi) B'(s) log|s - s0| (the Hilbert transform of the jump), which
 // no Chebyshev series converges to. It is taken out in closed form, windowed:
 //   q_k(t) = -(1/pi) B'(t) log|t - s0| W((t - s0)/r),  |t - s0| < r,
-// W a polynomial of degree 24, 1 - O(u^10) at 0 and zero to order 8 at |u| = 1 (gentle: a
-// steep window would need as many nodes as the singularity it removes), r within the zone and
+// W a polynomial of degree 48, 1 - O(u^10) at 0 and zero to order 20 at |u| = 1 (the rest of
+// the density converges like a power of the nodes that this order sets; a steeper window needs
+// more nodes for its own shape, a gentler one more for its edges), r within the zone and
 // within the branches' analyticity. Its potential is smooth on either side of s0 and of the
 // window's edges: it is computed once per window (near the window by Gauss-Legendre quadrature
 // after a sigmoidal substitution, beyond twice its radius by its moments' expansion) at the
