@@ -18,11 +18,18 @@ namespace {
 // W(u) = (1 - v)^K sum_{i<L} C(K + i - 1, i) v^i, v = u^2: 1 - O(u^(2 L)) at 0 (the truncated
 // series of (1 - v)^-K), zero to order K at |u| = 1, a polynomial of degree 2 (K + L - 1)
 // falling monotonically (a regularised incomplete beta function).
-// K = 20: the rest of the density, C^19 at the window's edges, converges like N^-20 instead
-// of N^-8 (K = 8, the window until 2026-11-29: a zone across the kink on m = 5.1, n = 24 erred
-// by 7e-7 on 512 nodes, now 8e-9, and by 2.3e-9 on 1024 where the rounding's 1e-10 is now
-// reached); steeper still (K = 24) took as long.
-constexpr int window_order = 20, window_flatness = 5;
+constexpr int window_flatness = 5;
+// The order K: steep_order for a window of radius steep_from or more (in s), gentle_order
+// below. The rest of the density, C^(K-1) at the window's edges, converges like N^-K: with
+// K = 8 alone (until 2026-11-29) a zone across the kink on m = 5.1, n = 24 erred by 7e-7 on
+// 512 nodes, with K = 20 by 8e-9 (K = 24 did as well, 12 and 16 less). A steep window needs
+// nodes for its own shape, though: one of radius r next to a zone's end (extent at most 2 in
+// s) holds about (N / pi) sqrt(2.1 r) of the zone's N nodes, at the most working nodes 33 for
+// r = 3e-4, and narrower steep windows (2.3e-5 and 5.9e-5 at ends just past the kink:
+// campaign seeds 23 and 25 with --max-n 8 and 32) left a spurious tension at the end, cut
+// and back until the changes ran out, where the gentle window settles.
+constexpr int steep_order = 20, gentle_order = 8;
+constexpr double steep_from = 3e-4;
 constexpr double least_inside = 1e-6;  // of the zone's extent in s: nearer an end, its effect is below rounding
 constexpr int most_piece_nodes = 257;
 // A piece's interpolant also stops where its tail stays at the values' own noise: once below
@@ -36,15 +43,15 @@ constexpr double piece_noise = 1e-12;
 // window, (r / (s - s0))^k / k falling at least like 2^-k: 56 terms reach 1e-17.
 constexpr int multipole_terms = 56;
 
-double window(double u) {
+double window(double u, int order) {
   if (!(std::fabs(u) < 1)) return 0;
   const double v = u * u;
   double term = 1, sum = 1;
   for (int i = 1; i < window_flatness; ++i) {
-    term *= v * (window_order + i - 1) / i;
+    term *= v * (order + i - 1) / i;
     sum += term;
   }
-  return std::pow(1 - v, window_order) * sum;
+  return std::pow(1 - v, order) * sum;
 }
 
 }  // namespace
@@ -61,7 +68,7 @@ std::shared_ptr<KinkWindows> shared_kink_windows(const std::vector<double>& key)
   // A map's load lines at one shape m and many roughnesses build each window once instead of
   // once a line (the 10^4 points of bench/map_vs_loops.py at m = 10: 3.24 -> 2.61 s, the same
   // rows), as long as its shapes are at most this many: a map takes its lines roughness by
-  // roughness. A window holds about 10 KB (m = 10: 22 to 32 pieces, 700 to 1100 coefficients).
+  // roughness. A window holds about 10 KB (m = 10: 22 to 32 pieces, 600 to 1200 coefficients).
   constexpr std::size_t kept_kinks = 32;
   static std::mutex mutex;
   static std::vector<std::pair<std::vector<double>, std::shared_ptr<KinkWindows>>> recent;  // the newest last
@@ -79,7 +86,8 @@ std::shared_ptr<KinkWindows> shared_kink_windows(const std::vector<double>& key)
   return windows;
 }
 
-KinkCorrection::KinkCorrection(const Kink& kink, double r) : s0_(kink.s), slope_jump_(kink.slope_jump), r_(r) {
+KinkCorrection::KinkCorrection(const Kink& kink, double r)
+    : s0_(kink.s), slope_jump_(kink.slope_jump), r_(r), order_(r >= steep_from ? steep_order : gentle_order) {
   const double s0 = kink.s;
   // nu_k = Int q_k(t) ((t - s0) / r)^k dt, the moments of the far field. The moments, then the
   // pieces, are each computed alone, on the threads: a window is most of a single solve's time
@@ -179,7 +187,7 @@ std::shared_ptr<const KinkCorrection> KinkCorrection::of(const SurfaceModel& sur
 double KinkCorrection::density(double t) const {
   const double u = (t - s0_) / r_;
   if (!(std::fabs(u) < 1) || t == s0_) return 0;
-  return -slope_jump_(t) * std::log(std::fabs(t - s0_)) * window(u) / pi;
+  return -slope_jump_(t) * std::log(std::fabs(t - s0_)) * window(u, order_) / pi;
 }
 
 double KinkCorrection::direct_potential(double s) const {

@@ -5,9 +5,9 @@
 // The density then holds -(1/pi) B'(s) log|s - s0| (the Hilbert transform of the jump), which
 // no Chebyshev series converges to. It is taken out in closed form, windowed:
 //   q_k(t) = -(1/pi) B'(t) log|t - s0| W((t - s0)/r),  |t - s0| < r,
-// W a polynomial of degree 48, 1 - O(u^10) at 0 and zero to order 20 at |u| = 1 (the rest of
-// the density converges like a power of the nodes that this order sets; a steeper window needs
-// more nodes for its own shape, a gentler one more for its edges), r within the zone and
+// W a polynomial, 1 - O(u^10) at 0 and zero to order K at |u| = 1: K = 20 (degree 48) for
+// r >= 3e-4, K = 8 (degree 24) below (the rest of the density converges like N^-K; a steeper
+// window needs more nodes for its own shape, kink_correction.cpp), r within the zone and
 // within the branches' analyticity. Its potential is smooth on either side of s0 and of the
 // window's edges: it is computed once per window (near the window by Gauss-Legendre quadrature
 // after a sigmoidal substitution, beyond twice its radius by its moments' expansion) at the
@@ -65,6 +65,7 @@ class KinkCorrection {
   double s0_;
   std::function<double(double)> slope_jump_;
   double r_;
+  int order_;  // of the window W at its edges
   std::vector<Piece> pieces_;
   std::vector<double> moments_;  // nu_k of the far field (kink_correction.cpp)
   double load_ = 0;
