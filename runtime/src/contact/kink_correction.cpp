@@ -100,7 +100,7 @@ KinkCorrection::KinkCorrection(const Kink& kink, double r)
   load_ = moments_[0];
   // The potential on pieces between -1 and 1 graded geometrically towards s0 (where it goes
   // like (s - s0)^2 log|s - s0|) and away from the window's edges s0 -+ r (where it is only
-  // C^19): each piece then holds a function smooth on its own scale, which a few tens of
+  // C^(K-1)): each piece then holds a function smooth on its own scale, which a few tens of
   // Chebyshev coefficients represent (a piece spanning the scales needed hundreds, and each
   // node of a zone across the kink evaluates one). Interpolants at the extrema cos(pi i / n)
   // of T_n, n doubling (each doubling reuses the values it has) until the last coefficients
