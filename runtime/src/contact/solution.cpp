@@ -4,9 +4,21 @@
 #include <cmath>
 
 #include "constants.hpp"
+#include "support/parallel.hpp"
 #include "zone_field.hpp"
 
 namespace wavecontact::detail {
+
+namespace {
+
+// A run of points in one zone is summed in batches of this many (held on the stack).
+constexpr std::size_t pressure_batch = 64;
+// Points times the longest zone's series above which pressures() shares its points out to the
+// threads: a zone across a kink holds thousands of nodes, and each point sums them all (the
+// 200 loads of the wave curve m = 10 compared 801 samples on 8192 nodes in its refinement).
+constexpr std::size_t parallel_pressure_terms = std::size_t{1} << 18;
+
+}  // namespace
 
 ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Configuration configuration)
     : surface_(std::move(surface)),
@@ -17,6 +29,7 @@ ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Co
   for (const ZoneUnknowns& z : configuration_.zones) {
     ends_.push_back(z.geometry.a), ends_.push_back(z.geometry.b);
     pressure_series_.push_back(bounded_pressure_series(z.geometry, z.d.data(), static_cast<int>(z.d.size())));
+    longest_series_ = std::max(longest_series_, pressure_series_.back().size());
   }
 }
 
@@ -38,14 +51,25 @@ double ContactSolution::pressure(double x) const {
 }
 
 void ContactSolution::pressures(const double* xs, double* ps, std::size_t count) const {
-  // Each run of points in one zone takes one batch of the zone's sums (of at most `chunk`
-  // points, held on the stack: a single point allocates nothing).
-  constexpr std::size_t chunk = 64;
-  double run[chunk];
+  // Each point is summed alone (chebyshev.cpp, zone_field.cpp), so how the points are shared
+  // out does not change a bit.
+  if (count > pressure_batch && count * longest_series_ >= parallel_pressure_terms) {
+    for_each_chunk(count, pressure_batch, 0, [&](std::size_t begin, std::size_t end) {
+      pressures_here(xs + begin, ps + begin, end - begin);
+    });
+  } else {
+    pressures_here(xs, ps, count);
+  }
+}
+
+void ContactSolution::pressures_here(const double* xs, double* ps, std::size_t count) const {
+  // Each run of points in one zone takes one batch of the zone's sums (a single point
+  // allocates nothing).
+  double run[pressure_batch];
   for (std::size_t i = 0; i < count;) {
     const std::size_t k = zone_at(std::fabs(xs[i]));
     std::size_t end = i + 1;
-    while (end < count && end - i < chunk && zone_at(std::fabs(xs[end])) == k) ++end;
+    while (end < count && end - i < pressure_batch && zone_at(std::fabs(xs[end])) == k) ++end;
     if (k == zone_count()) {
       std::fill(ps + i, ps + end, 0.0);
     } else {

@@ -61,6 +61,8 @@ class ContactSolution {
   double potential(double x) const;
 
  private:
+  // pressures() on the calling thread.
+  void pressures_here(const double* xs, double* ps, std::size_t count) const;
   // The gap (2/E*)(Psi - C) - depth from Psi - C and the depth y(x^) - y_top at one point.
   double gap_of(double potential_less_C, double depth) const { return 2 / surface_->E * potential_less_C - depth; }
 
@@ -69,6 +71,7 @@ class ContactSolution {
   ZoneFields fields_;
   std::vector<double> ends_;                          // a_0, b_0, a_1, ...: for zone_at
   std::vector<std::vector<double>> pressure_series_;  // of each zone: bounded_pressure_series
+  std::size_t longest_series_ = 0;
   // Of each zone and span (at 2 k + span), once sampled_ at the same place has run.
   mutable std::vector<PressureSamples> samples_;
   std::unique_ptr<std::once_flag[]> sampled_;
