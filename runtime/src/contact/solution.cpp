@@ -54,9 +54,8 @@ void ContactSolution::pressures(const double* xs, double* ps, std::size_t count)
   // Each point is summed alone (chebyshev.cpp, zone_field.cpp), so how the points are shared
   // out does not change a bit.
   if (count > pressure_batch && count * longest_series_ >= parallel_pressure_terms) {
-    for_each_chunk(count, pressure_batch, 0, [&](std::size_t begin, std::size_t end) {
-      pressures_here(xs + begin, ps + begin, end - begin);
-    });
+    for_each_chunk(count, pressure_batch, 0,
+                   [&](std::size_t begin, std::size_t end) { pressures_here(xs + begin, ps + begin, end - begin); });
   } else {
     pressures_here(xs, ps, count);
   }
