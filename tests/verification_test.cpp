@@ -13,6 +13,7 @@
 #include "contact/solution.hpp"
 #include "contact/verification.hpp"
 #include "wavecontact/contact.hpp"
+#include "wavecontact/threads.hpp"
 
 using namespace wavecontact;
 using boost::math::double_constants::pi;
@@ -82,4 +83,36 @@ BOOST_AUTO_TEST_CASE(gaps_in_one_batch_equal_the_gap_point_by_point) {
     }
   }
   BOOST_TEST_MESSAGE(solution.zone_count() << " zones; largest difference " << largest);
+}
+
+// Many points on long series are shared out to the threads (ContactSolution::pressures): a
+// zone across the kink of m = 5.1 with its series lengthened to 4096 terms, 3001 points over
+// the half period: the same bits as each point alone, with one thread or two.
+BOOST_AUTO_TEST_CASE(pressures_shared_out_equal_each_point_alone) {
+  const Surface surface(WavinessParams{1, 10, 5.1034742561862432, 1}, {{0.2, 24}});
+  const auto& model = surface.model();
+  const double P = 3.1645124715907493;
+  const detail::SettleOutcome settled = detail::settle(
+      model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes), {400}, {});
+  BOOST_TEST_REQUIRE(settled.contact.has_value(), "no contact: " << settled.failure);
+  detail::Configuration c = *settled.contact;
+  for (detail::ZoneUnknowns& z : c.zones) {
+    const std::size_t n = z.d.size();
+    z.d.resize(4096);
+    for (std::size_t j = n; j < z.d.size(); ++j) z.d[j] = 1e-9 * std::sin(static_cast<double>(j));
+  }
+  const detail::ContactSolution solution(model, c);
+  const std::vector<double> xs = samples(0, pi, 3000);
+  std::vector<double> alone(xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) alone[i] = solution.pressure(xs[i]);
+  for (int threads : {1, 2}) {
+    set_array_kernel_threads(threads);
+    std::vector<double> shared(xs.size(), std::nan(""));
+    solution.pressures(xs.data(), shared.data(), xs.size());
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      BOOST_TEST(shared[i] == alone[i],
+                 threads << " threads, x^ = " << xs[i] << ": " << shared[i] << " shared, " << alone[i] << " alone");
+    }
+  }
+  set_array_kernel_threads(0);
 }
