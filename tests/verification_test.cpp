@@ -26,6 +26,15 @@ std::vector<double> samples(double lo, double hi, int count) {
   return xs;
 }
 
+// The contact the settling finds at P from the grid's seed (the first stage of a solve).
+detail::Configuration settled(const Surface& surface, double P) {
+  const auto& model = surface.model();
+  const detail::SettleOutcome outcome = detail::settle(
+      model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes), {400}, {});
+  BOOST_TEST_REQUIRE(outcome.contact.has_value(), "no contact at P = " << P << ": " << outcome.failure);
+  return *outcome.contact;
+}
+
 }  // namespace
 
 // A well whose samples all lie above 0 but whose bottom lies below it, between two samples:
@@ -63,11 +72,7 @@ BOOST_AUTO_TEST_CASE(a_well_that_cannot_reach_zero_is_left_out) {
 BOOST_AUTO_TEST_CASE(gaps_in_one_batch_equal_the_gap_point_by_point) {
   const Surface surface(WavinessParams{1, 10, 0, 1}, {{0.02, 32}});
   const auto& model = surface.model();
-  const double P = 0.5;
-  const detail::SettleOutcome settled = detail::settle(
-      model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes), {400}, {});
-  BOOST_TEST_REQUIRE(settled.contact.has_value(), "no contact: " << settled.failure);
-  const detail::ContactSolution solution(model, *settled.contact);
+  const detail::ContactSolution solution(model, settled(surface, 0.5));
   BOOST_TEST_REQUIRE(solution.zone_count() >= 3u);
   double largest = 0;
   for (std::size_t k = 0; k < solution.zone_count(); ++k) {
@@ -90,18 +95,13 @@ BOOST_AUTO_TEST_CASE(gaps_in_one_batch_equal_the_gap_point_by_point) {
 // the half period: the same bits as each point alone, with one thread or two.
 BOOST_AUTO_TEST_CASE(pressures_shared_out_equal_each_point_alone) {
   const Surface surface(WavinessParams{1, 10, 5.1034742561862432, 1}, {{0.2, 24}});
-  const auto& model = surface.model();
-  const double P = 3.1645124715907493;
-  const detail::SettleOutcome settled = detail::settle(
-      model, P, detail::grid_seed(*model, P, detail::seed_cells(*model), detail::working_nodes), {400}, {});
-  BOOST_TEST_REQUIRE(settled.contact.has_value(), "no contact: " << settled.failure);
-  detail::Configuration c = *settled.contact;
+  detail::Configuration c = settled(surface, 3.1645124715907493);
   for (detail::ZoneUnknowns& z : c.zones) {
     const std::size_t n = z.d.size();
     z.d.resize(4096);
     for (std::size_t j = n; j < z.d.size(); ++j) z.d[j] = 1e-9 * std::sin(static_cast<double>(j));
   }
-  const detail::ContactSolution solution(model, c);
+  const detail::ContactSolution solution(surface.model(), c);
   const std::vector<double> xs = samples(0, pi, 3000);
   std::vector<double> alone(xs.size());
   for (std::size_t i = 0; i < xs.size(); ++i) alone[i] = solution.pressure(xs[i]);
