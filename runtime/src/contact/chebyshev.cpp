@@ -154,6 +154,32 @@ std::vector<double> coefficients(const std::vector<double>& values) {
   return out;
 }
 
+void values(const double* c, int count, int M, double* out) {
+  if (M <= tabulated) {
+    sums(Kind::t, c, static_cast<std::size_t>(count), nodes(M).data(), out, static_cast<std::size_t>(M));
+    return;
+  }
+  // y_k = x_0 + 2 sum_{j>=1} x_j cos(pi j (k + 1/2) / M) = sum_j c_j T_j(tau_k): the terms past
+  // the first halved.
+  CosineTransform& transform = planned_transform(static_cast<std::size_t>(M), CosineTransform::Kind::dct3);
+  std::vector<double>& y = transform.data();
+  std::fill(y.begin(), y.end(), 0.0);
+  for (int j = 0; j < count; ++j) y[static_cast<std::size_t>(j)] = j == 0 ? c[0] : c[j] / 2;
+  transform.apply();
+  std::copy(y.begin(), y.end(), out);
+}
+
+std::vector<double> derivative(const std::vector<double>& c) {
+  // c'_{j-1} = c'_{j+1} + 2 j c_j from the highest, c'_0 halved.
+  const std::size_t n = c.size();
+  if (n < 2) return {};
+  std::vector<double> d(n - 1, 0.0);
+  for (std::size_t j = n - 1; j >= 1; --j)
+    d[j - 1] = 2 * static_cast<double>(j) * c[j] + (j + 1 < n - 1 ? d[j + 1] : 0.0);
+  d[0] /= 2;
+  return d;
+}
+
 std::vector<double> extrema_coefficients(const std::vector<double>& values) {
   // c_j = (2/n) sum_i'' v_i cos(pi i j / n) (the first and last terms halved; c_0, c_n halved).
   const int n = static_cast<int>(values.size()) - 1;

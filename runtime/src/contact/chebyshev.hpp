@@ -17,6 +17,13 @@ std::vector<double> coefficients(const std::vector<double>& values);
 // apart from `values`).
 void coefficients(const double* values, int M, double* out);
 
+// The values at nodes(M) of the series c_0 .. c_{count-1} (count <= M) into `out` (M values):
+// the inverse of coefficients.
+void values(const double* c, int count, int M, double* out);
+
+// The coefficients of the series' derivative d/dtau (one term fewer; none for a constant).
+std::vector<double> derivative(const std::vector<double>& c);
+
 // The coefficients c_0 .. c_n of the polynomial of degree n through values at the extrema
 // cos(pi i / n), i = 0 .. n (Clenshaw-Curtis points: they nest as n doubles).
 std::vector<double> extrema_coefficients(const std::vector<double>& values);

@@ -21,7 +21,10 @@ std::mutex& planner_mutex() {  // FFTW's planner is not reentrant; its plans' ex
 CosineTransform::CosineTransform(std::size_t points, Kind kind) : data_(points) {
   const std::lock_guard<std::mutex> lock(planner_mutex());
   plan_ = fftw_plan_r2r_1d(static_cast<int>(points), data_.data(), data_.data(),
-                           kind == Kind::dct1 ? FFTW_REDFT00 : FFTW_REDFT10, FFTW_ESTIMATE);
+                           kind == Kind::dct1   ? FFTW_REDFT00
+                           : kind == Kind::dct2 ? FFTW_REDFT10
+                                                : FFTW_REDFT01,
+                           FFTW_ESTIMATE);
   if (plan_ == nullptr) throw std::runtime_error("wavecontact: FFTW could not plan a cosine transform");
 }
 

@@ -4,7 +4,9 @@
 // and its own inverse up to the factor 2N: the contact solver's grid guess and its cosine
 // series on uniform grids take it. The DCT-II (REDFT10) of N points,
 //   y_k = 2 sum_{j=0}^{N-1} x_j cos(pi k (j + 1/2) / N),
-// takes values at Chebyshev's nodes of the first kind to their series (chebyshev.hpp).
+// takes values at Chebyshev's nodes of the first kind to their series (chebyshev.hpp), and the
+// DCT-III (REDFT01) of N points, y_k = x_0 + 2 sum_{j=1}^{N-1} x_j cos(pi j (k + 1/2) / N),
+// a series back to its values there.
 #pragma once
 
 #include <cstddef>
@@ -16,7 +18,7 @@ namespace wavecontact::detail {
 
 class CosineTransform {
  public:
-  enum class Kind { dct1, dct2 };
+  enum class Kind { dct1, dct2, dct3 };
   explicit CosineTransform(std::size_t points, Kind kind = Kind::dct1);  // dct1: N + 1 >= 2
   ~CosineTransform();
   CosineTransform(const CosineTransform&) = delete;
