@@ -20,9 +20,6 @@ constexpr double tiny = std::numeric_limits<double>::min();
 // (layout()): below Newton's 1e-10, where it stops at its first iteration that does not halve.
 constexpr double rounding_reach = 1e-11;
 
-// The angles of the zone's Chebyshev nodes.
-std::vector<double> node_angles(const ZoneGeometry& g, int count) { return g.angles_of(chebyshev::nodes(count)); }
-
 // An end's angle from its unknown (end_distance), kept within [0, 2].
 double end_angle(double unknown, bool upper) {
   const double half = 2 * std::asin(std::sqrt(std::clamp(unknown, 0.0, 2.0) / 2));
@@ -30,6 +27,24 @@ double end_angle(double unknown, bool upper) {
 }
 
 }  // namespace
+
+std::vector<double> node_angles(const ZoneGeometry& g, int count) { return g.angles_of(chebyshev::nodes(count)); }
+
+// The field is analytic up to the nearest other zone, a distance g in s beyond the zone's
+// nearer end: its series falls like rho^-j, rho = 1 + g/h + sqrt((g/h)(2 + g/h)) (the
+// Bernstein ellipse through that end), below 1e-17 after 39.1 / log(rho) terms.
+int smooth_field_terms(const std::vector<ZoneUnknowns>& zones, std::size_t k) {
+  const ZoneGeometry& g = zones[k].geometry;
+  double gap = std::numeric_limits<double>::infinity();
+  if (k > 0) gap = std::min(gap, cos_difference(zones[k - 1].geometry.b, g.a));
+  if (k + 1 < zones.size()) gap = std::min(gap, cos_difference(g.b, zones[k + 1].geometry.a));
+  if (std::isinf(gap)) return 0;
+  const double r = gap / g.h, log_rho = std::log1p(r + std::sqrt(r * (2 + r)));
+  const double terms = 2 * 39.1439465808987777 / log_rho;
+  int count = 32;
+  while (count < terms && count < (1 << 24)) count *= 2;
+  return count;
+}
 
 double end_distance(double x, bool upper) {
   const double r = upper ? std::sin(x / 2) : std::cos(x / 2);
@@ -117,7 +132,7 @@ Configuration ZoneSystem::unpack(const std::vector<double>& X, const SystemLayou
   return c;
 }
 
-ZoneFields::ZoneFields(const SurfaceModel& surface, const Configuration& c) : tree(c) {
+ZoneFields::ZoneFields(const SurfaceModel& surface, const Configuration& c) : zones(c.zones), tree(c) {
   for (const ZoneUnknowns& z : c.zones) {
     kinks.push_back(KinkCorrection::of(surface, z.geometry, z.kink_window));
     if (kinks.back()) kinked.push_back(kinks.size() - 1);
@@ -135,6 +150,41 @@ FieldTree::Batch ZoneFields::evaluate(std::size_t skip, const std::vector<double
     for (std::size_t i = 0; i < x.size(); ++i) batch.difference[i] += potential[i] - at_reference;
   }
   return batch;
+}
+
+FieldTree::Batch ZoneFields::at_nodes(std::size_t k, const std::vector<double>& x, bool slopes) const {
+  const int M = static_cast<int>(x.size()), terms = smooth_field_terms(zones, k);
+  const double x_ref = x[static_cast<std::size_t>(M / 2)];
+  if (terms == 0) {  // no other zone
+    FieldTree::Batch none;
+    none.difference.assign(x.size(), 0.0);
+    if (slopes) none.slope.assign(x.size(), 0.0);
+    return none;
+  }
+  if (terms > M / 4) return evaluate(k, x, x_ref, slopes);
+  const ZoneGeometry& g = zones[k].geometry;
+  const FieldTree::Batch coarse = evaluate(k, node_angles(g, terms), x_ref, false);
+  const std::vector<double> c = chebyshev::coefficients(coarse.difference);
+  // The series' second half must be at the rounding of its largest term (else a field less
+  // smooth than its distance promises: the nodes themselves take it).
+  double largest = 0, tail = 0;
+  for (std::size_t j = 0; j < c.size(); ++j) {
+    largest = std::max(largest, std::fabs(c[j]));
+    if (2 * j >= c.size()) tail = std::max(tail, std::fabs(c[j]));
+  }
+  if (!(tail <= 1e-14 * largest)) return evaluate(k, x, x_ref, slopes);
+  FieldTree::Batch out;
+  out.at_reference = coarse.at_reference;
+  out.difference.resize(x.size());
+  chebyshev::values(c.data(), terms, M, out.difference.data());
+  if (slopes) {
+    // d/ds = (1/h) d/dtau.
+    std::vector<double> dc = chebyshev::derivative(c);
+    for (double& v : dc) v /= g.h;
+    out.slope.resize(x.size());
+    chebyshev::values(dc.data(), static_cast<int>(dc.size()), M, out.slope.data());
+  }
+  return out;
 }
 
 double ZoneFields::potential(double x, std::size_t skip) const { return evaluate(skip, {}, x, false).at_reference; }
@@ -172,7 +222,7 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
     const SystemLayout::Zone& lz = L.zones[k];
     const int M = lz.count;
     const std::vector<double> x = node_angles(zk.geometry, M);
-    FieldTree::Batch others = fields.evaluate(k, x, x[static_cast<std::size_t>(M / 2)], external_slope != nullptr);
+    FieldTree::Batch others = fields.at_nodes(k, x, external_slope != nullptr);
     std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get()),
                         own(static_cast<std::size_t>(M));
     G[0] += c.C;
@@ -228,7 +278,7 @@ void ZoneSystem::relax(Configuration& c) const {
     const ZoneUnknowns& zk = c.zones[k];
     const int M = static_cast<int>(zk.d.size());
     const std::vector<double> x = node_angles(zk.geometry, M);
-    const FieldTree::Batch others = fields.evaluate(k, x, x[static_cast<std::size_t>(M / 2)], false);
+    const FieldTree::Batch others = fields.at_nodes(k, x, false);
     const std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get());
     std::vector<double> d(static_cast<std::size_t>(M));
     const double lambda = self_logarithm(zk.geometry);

@@ -53,15 +53,30 @@ struct SystemLayout {
 struct ZoneFields {
   // Of c, which must outlive the fields (the tree refers to its zones).
   ZoneFields(const SurfaceModel& surface, const Configuration& c);
+  const std::vector<ZoneUnknowns>& zones;
   std::vector<std::shared_ptr<const KinkCorrection>> kinks;
   std::vector<std::size_t> kinked;  // the zones that have one
   FieldTree tree;
   // The potential of every zone but `skip` (past the last: none) at a batch of nearby
   // points, as FieldTree::evaluate gives it (the kink corrections' slopes left out).
   FieldTree::Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const;
+  // The same of every zone but k at zone k's nodes x (node_angles, the reference x[M/2]).
+  // The others' field is analytic on the zone up to the nearest other zone: where its
+  // Chebyshev series needs at most a quarter of the zone's M terms (smooth_field_terms), it
+  // is evaluated at the nodes of that many and its series summed at x, the slopes from the
+  // series' derivative (the other zones' kink corrections' with them). A zone across a kink
+  // holds up to 32768 nodes; on the wave curve m = 10 the other zone's field there takes 128.
+  FieldTree::Batch at_nodes(std::size_t k, const std::vector<double>& x, bool slopes) const;
   // The potential at one point.
   double potential(double x, std::size_t skip) const;
 };
+
+// The angles of the zone's Chebyshev nodes (chebyshev::nodes(count)).
+std::vector<double> node_angles(const ZoneGeometry& g, int count);
+
+// The Chebyshev terms, in zone k's tau, that the other zones' field needs on zone k: twice
+// those to 1e-17, a power of two from 32 (ZoneFields::at_nodes); 0 for no other zone.
+int smooth_field_terms(const std::vector<ZoneUnknowns>& zones, std::size_t k);
 
 // The Chebyshev coefficients G_j of a zone's right-hand side at its nodes x (angles):
 // (E/2)(y - y_top) less the other zones' potential `others` (a batch at x with the reference
