@@ -69,8 +69,8 @@ std::vector<std::size_t> compare_at_every_zone(const detail::SurfaceModel& surfa
     BOOST_TEST_MESSAGE("zone " << k << " (" << M << " nodes, " << terms << " terms): potentials off by "
                                << largest_difference(got.difference, direct.difference) / scale << ", slopes by "
                                << largest_difference(got.slope, direct.slope) / slope_scale);
-    BOOST_TEST(got.at_reference == direct.at_reference, "zone " << k << ": at the reference " << got.at_reference
-                                                                 << ", directly " << direct.at_reference);
+    BOOST_TEST(got.at_reference == direct.at_reference,
+               "zone " << k << ": at the reference " << got.at_reference << ", directly " << direct.at_reference);
     BOOST_TEST(largest_difference(got.difference, direct.difference) <= 1e-13 * scale,
                "zone " << k << " (" << M << " nodes, " << terms << " terms): potentials off by "
                        << largest_difference(got.difference, direct.difference) << " of " << scale);
