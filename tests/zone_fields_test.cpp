@@ -162,6 +162,19 @@ BOOST_AUTO_TEST_CASE(coarse_field_on_a_zone_across_the_kink) {
   BOOST_TEST(coarse == (std::vector<std::size_t>{0}), "the coarse grid served " << coarse.size() << " zones");
 }
 
+// Zones that touch leave no smoothness to use: every node takes the field (and overlapping
+// ones, whose distance is negative, likewise).
+BOOST_AUTO_TEST_CASE(touching_zones_take_the_field_at_every_node) {
+  detail::Configuration c;
+  c.zones.push_back({detail::ZoneGeometry(0, 1.0), decaying_series(4096, 0.9, 4)});
+  c.zones.push_back({detail::ZoneGeometry(1.0, 1.5), decaying_series(48, 0.9, 5)});
+  BOOST_TEST(detail::smooth_field_terms(c.zones, 0) > 4096 / 4);
+  c.zones[1] = {detail::ZoneGeometry(0.9, 1.5), decaying_series(48, 0.9, 5)};
+  BOOST_TEST(detail::smooth_field_terms(c.zones, 0) > 4096 / 4);
+  c.zones[1] = {detail::ZoneGeometry(1.2, 1.5), decaying_series(48, 0.9, 5)};
+  BOOST_TEST(detail::smooth_field_terms(c.zones, 0) <= 4096 / 4);
+}
+
 // With one zone there is no other: nothing, whatever the nodes.
 BOOST_AUTO_TEST_CASE(one_zone_has_no_other_field) {
   const Surface surface(WavinessParams{1, 10, 0, 1});

@@ -39,10 +39,12 @@ int smooth_field_terms(const std::vector<ZoneUnknowns>& zones, std::size_t k) {
   if (k > 0) gap = std::min(gap, cos_difference(zones[k - 1].geometry.b, g.a));
   if (k + 1 < zones.size()) gap = std::min(gap, cos_difference(g.b, zones[k + 1].geometry.a));
   if (std::isinf(gap)) return 0;
+  constexpr int most = 1 << 24;  // beyond any zone's nodes: the field at every node
   const double r = gap / g.h, log_rho = std::log1p(r + std::sqrt(r * (2 + r)));
+  if (!(log_rho > 0)) return most;  // zones that touch (or, not a number, overlap)
   const double terms = 2 * 39.1439465808987777 / log_rho;
   int count = 32;
-  while (count < terms && count < (1 << 24)) count *= 2;
+  while (count < terms && count < most) count *= 2;
   return count;
 }
 
