@@ -346,6 +346,10 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
           std::fprintf(stderr, "wavecontact trace:   tension %.3g at %.9g in zone %zu (curvature %.3g)\n", t.pressure,
                        t.x, t.zone, t.curvature);
         }
+        for (const Penetration& p : v.penetrations) {
+          std::fprintf(stderr, "wavecontact trace:   penetration %.3g at %.9g in [%.9g, %.9g] (curvature %.3g)\n",
+                       p.depth, p.x, p.lo, p.hi, p.curvature);
+        }
       }
       if (v.tensions.empty() && v.penetrations.empty()) {
         if (!grow_nodes(c, surface, working_tail)) return {std::move(c), {}};
