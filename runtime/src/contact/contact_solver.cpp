@@ -76,8 +76,10 @@ ContactSolver::ContactSolver(std::shared_ptr<const SurfaceModel> surface, double
   // 1 - cos(pi/8), 8 % of its depth, at most.
   const auto [low, high] = std::minmax_element(ps.begin(), ps.end());
   double lowest = std::numeric_limits<double>::infinity();
-  for (const auto& [x, p] : local_minima(
-           xs, ps, [&](double x) { return full.pressure(x); }, *low + 0.1 * (*high - *low))) {
+  const BatchFunction pressures = [&](const double* at, double* values, std::size_t count) {
+    full.pressures(at, values, count);
+  };
+  for (const auto& [x, p] : local_minima(xs, ps, pressures, *low + 0.1 * (*high - *low))) {
     lowest = std::min(lowest, p);
   }
   onset_ = std::max(0.0, -2 * pi * lowest);

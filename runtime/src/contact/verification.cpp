@@ -1,6 +1,7 @@
 #include "verification.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -12,8 +13,41 @@
 
 namespace wavecontact::detail {
 
+namespace {
+
+// Brent's method on [a, b] (either order) with f at one point.
+std::pair<double, double> brent(const BatchFunction& f, double a, double b) {
+  const auto one = [&](double x) {
+    double value;
+    f(&x, &value, 1);
+    return value;
+  };
+  return boost::math::tools::brent_find_minima(one, std::min(a, b), std::max(a, b), 40);
+}
+
+// The lowest of f between the end sample `end` (value `at_end`) and its neighbour: the probes
+// end + (neighbour - end) 2^-k, k = 1 .. end_probes, and where one lies below the end,
+// Brent's method between the probes (or the neighbour, or the end) beside the lowest.
+std::pair<double, double> towards_the_end(const BatchFunction& f, double end, double at_end, double neighbour) {
+  std::array<double, end_probes + 2> x;  // x[0] the neighbour, x[k] the probes, the end last
+  std::array<double, end_probes> probe;
+  x[0] = neighbour;
+  for (int k = 1; k <= end_probes; ++k) x[k] = end + (neighbour - end) * std::ldexp(1.0, -k);
+  x[end_probes + 1] = end;
+  f(x.data() + 1, probe.data(), end_probes);
+  const auto lowest = std::min_element(probe.begin(), probe.end());
+  if (!(*lowest < at_end)) return {end, at_end};
+  const std::size_t k = static_cast<std::size_t>(lowest - probe.begin()) + 1;
+  std::pair<double, double> best{x[k], *lowest};
+  const auto refined = brent(f, x[k - 1], x[k + 1]);
+  if (refined.second < best.second) best = refined;
+  return best;
+}
+
+}  // namespace
+
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
-                                                    const std::function<double(double)>& f, double at_most) {
+                                                    const BatchFunction& f, double at_most) {
   std::vector<std::pair<double, double>> minima;
   const std::size_t n = xs.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -24,10 +58,11 @@ std::vector<std::pair<double, double>> local_minima(const std::vector<double>& x
     const double rise = std::max(i > 0 ? values[i - 1] : values[i], i + 1 < n ? values[i + 1] : values[i]) - values[i];
     if (values[i] - rise > at_most) continue;
     std::pair<double, double> best{xs[i], values[i]};
-    const double a = i > 0 ? xs[i - 1] : xs[i], b = i + 1 < n ? xs[i + 1] : xs[i];
-    if (b > a) {
-      const auto [x, v] = boost::math::tools::brent_find_minima(f, a, b, 40);
-      if (v < best.second) best = {x, v};
+    if (n > 1 && (i == 0 || i + 1 == n)) {
+      best = towards_the_end(f, xs[i], values[i], xs[i == 0 ? 1 : n - 2]);
+    } else if (n > 1) {
+      const auto refined = brent(f, xs[i - 1], xs[i + 1]);
+      if (refined.second < best.second) best = refined;
     }
     minima.push_back(best);
   }
@@ -58,7 +93,7 @@ ZoneCheck check_zone(const ContactSolution& s, std::size_t k) {
   }
   // Only a minimum that may fall below 0 can be a tension, or the lowest pressure reported.
   check.minima = local_minima(
-      xs, ps, [&](double x) { return s.pressure(x); }, 0.0);
+      xs, ps, [&](const double* x, double* p, std::size_t count) { s.pressures(x, p, count); }, 0.0);
   return check;
 }
 
@@ -85,15 +120,24 @@ GapCheck check_gap(const ContactSolution& s, double lo, double hi, double gap_to
   s.gaps(xs.data(), gaps.data(), xs.size());
   // Only a minimum that may fall below 0 can penetrate, or be the lowest gap reported.
   check.minima = local_minima(
-      xs, gaps, [&](double x) { return s.gap(x); }, 0.0);
-  for (const auto& [x, value] : check.minima) {
+      xs, gaps, [&](const double* x, double* g, std::size_t count) { s.gaps(x, g, count); }, 0.0);
+  const double step = 1e-3 * surface.resolution;
+  for (auto& [x, value] : check.minima) {
+    // The gap is even about the top and the valley: a minimum within a thousandth of the
+    // resolution of either is that one (probed up to it, the lowest probe may lie a rounding
+    // away, and a new zone there runs through it).
+    if (lo == 0 && x < step) x = 0;
+    if (hi == pi && pi - x < step) x = pi;
     // The gap grows like the 3/2 power of the distance from a zone's end: a shallow dip
     // right next to one is the truncation of that zone's series, not a new contact.
     const double from_end = std::min(lo > 0 ? x - lo : pi, hi < pi ? hi - x : pi);
     const bool beside_an_end = from_end < 1e-3 * (hi - lo) && value > -1e-6 * surface.height_range;
     if (value < -gap_tolerance && !beside_an_end) {
-      const double h = std::min({1e-3 * surface.resolution, (x - lo) / 2, (hi - x) / 2});
-      const double curvature = h > 0 ? (s.gap(x + h) - 2 * value + s.gap(x - h)) / (h * h) : 0;
+      // The second difference over a thousandth of the resolution, the gap taken even about
+      // the top and the valley, short of the zones' ends.
+      const double h = std::min({step, lo > 0 ? (x - lo) / 2 : step, hi < pi ? (hi - x) / 2 : step});
+      const auto even = [&](double y) { return s.gap(y > pi ? 2 * pi - y : y); };
+      const double curvature = h > 0 ? (even(x + h) - 2 * value + even(x - h)) / (h * h) : 0;
       check.penetrations.push_back({x, value, curvature, lo, hi});
     }
   }

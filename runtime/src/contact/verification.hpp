@@ -1,9 +1,11 @@
 // Whether a contact is a solution on the whole half period: p >= 0 on every zone and
 // gap >= 0 everywhere off them, the top and the valley included (docs/contact.md). The gap
-// is sampled eight times a shortest wavelength and every local minimum refined by Brent's
-// method; the pressure likewise on each zone.
+// is sampled eight times a shortest wavelength and every local minimum that may fall below 0
+// refined (local_minima); the pressure likewise on each zone.
 #pragma once
 
+#include <functional>
+#include <limits>
 #include <vector>
 
 #include "solution.hpp"
@@ -37,13 +39,21 @@ Verification verify(const ContactSolution& solution, double gap_tolerance, doubl
 // The highest pressure at verify()'s samples of the zones (the gap left unchecked).
 double highest_sampled_pressure(const ContactSolution& solution);
 
-// The local minima of f over the samples (x sorted), each refined by Brent's method between
-// its neighbours: (x, f(x)) pairs; only those that may lie at or below `at_most`. The lowest
-// sample of a parabola misses its bottom by at most a quarter of its rise to the higher
-// neighbour at even spacing, by less than that rise while neighbouring spacings differ less
-// than 4.8-fold: a well sampled higher than at_most by that rise is left out.
+// A function evaluated at many points at once: f(x, values, count).
+using BatchFunction = std::function<void(const double*, double*, std::size_t)>;
+
+// The local minima of f over the samples (x sorted): (x, f(x)) pairs; only those that may lie
+// at or below `at_most`. The lowest sample of a parabola misses its bottom by at most a
+// quarter of its rise to the higher neighbour at even spacing, by less than that rise while
+// neighbouring spacings differ less than 4.8-fold: a well sampled higher than at_most by that
+// rise is left out. A minimum between two samples is refined by Brent's method between its
+// neighbours. A minimum at the first or last sample (a zone's end, where the gap and the
+// pressure vanish) is probed towards it at end_probes points, each half as far from it as the
+// one before, in one batch; only a probe below the end starts Brent's method, between the
+// probes beside it.
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
-                                                    const std::function<double(double)>& f,
+                                                    const BatchFunction& f,
                                                     double at_most = std::numeric_limits<double>::infinity());
+inline constexpr int end_probes = 24;
 
 }  // namespace wavecontact::detail
