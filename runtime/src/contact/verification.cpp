@@ -47,7 +47,7 @@ std::pair<double, double> towards_the_end(const BatchFunction& f, double end, do
 }  // namespace
 
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
-                                                    const BatchFunction& f, double at_most) {
+                                                    const BatchFunction& f, double at_most, EndMinima ends) {
   std::vector<std::pair<double, double>> minima;
   const std::size_t n = xs.size();
   for (std::size_t i = 0; i < n; ++i) {
@@ -58,10 +58,11 @@ std::vector<std::pair<double, double>> local_minima(const std::vector<double>& x
     const double rise = std::max(i > 0 ? values[i - 1] : values[i], i + 1 < n ? values[i + 1] : values[i]) - values[i];
     if (values[i] - rise > at_most) continue;
     std::pair<double, double> best{xs[i], values[i]};
-    if (n > 1 && (i == 0 || i + 1 == n)) {
+    const bool at_an_end = i == 0 || i + 1 == n;
+    if (n > 1 && at_an_end && ends == EndMinima::probed) {
       best = towards_the_end(f, xs[i], values[i], xs[i == 0 ? 1 : n - 2]);
     } else if (n > 1) {
-      const auto refined = brent(f, xs[i - 1], xs[i + 1]);
+      const auto refined = brent(f, xs[i > 0 ? i - 1 : i], xs[i + 1 < n ? i + 1 : i]);
       if (refined.second < best.second) best = refined;
     }
     minima.push_back(best);
@@ -93,7 +94,7 @@ ZoneCheck check_zone(const ContactSolution& s, std::size_t k) {
   }
   // Only a minimum that may fall below 0 can be a tension, or the lowest pressure reported.
   check.minima = local_minima(
-      xs, ps, [&](const double* x, double* p, std::size_t count) { s.pressures(x, p, count); }, 0.0);
+      xs, ps, [&](const double* x, double* p, std::size_t count) { s.pressures(x, p, count); }, 0.0, EndMinima::brent);
   return check;
 }
 

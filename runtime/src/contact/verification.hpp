@@ -42,18 +42,25 @@ double highest_sampled_pressure(const ContactSolution& solution);
 // A function evaluated at many points at once: f(x, values, count).
 using BatchFunction = std::function<void(const double*, double*, std::size_t)>;
 
+// How local_minima refines a minimum at the first or last sample: probed towards that end at
+// end_probes points, each half as far from it as the one before, in one batch, a probe below
+// the end starting Brent's method between the probes beside it (the gap, whose ends are
+// zones' ends, the top or the valley); or by Brent's method between the end and its
+// neighbour, like a minimum between two samples (a zone's pressure: there the probes also
+// find the wiggles of a zone's series finer than its last node spacing, at an end next to
+// a kink's window, and each is then cut as a tension, over and over).
+enum class EndMinima { probed, brent };
+inline constexpr int end_probes = 24;
+
 // The local minima of f over the samples (x sorted): (x, f(x)) pairs; only those that may lie
 // at or below `at_most`. The lowest sample of a parabola misses its bottom by at most a
 // quarter of its rise to the higher neighbour at even spacing, by less than that rise while
 // neighbouring spacings differ less than 4.8-fold: a well sampled higher than at_most by that
 // rise is left out. A minimum between two samples is refined by Brent's method between its
-// neighbours. A minimum at the first or last sample (a zone's end, where the gap and the
-// pressure vanish) is probed towards it at end_probes points, each half as far from it as the
-// one before, in one batch; only a probe below the end starts Brent's method, between the
-// probes beside it.
+// neighbours; one at an end as `ends` says.
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
                                                     const BatchFunction& f,
-                                                    double at_most = std::numeric_limits<double>::infinity());
-inline constexpr int end_probes = 24;
+                                                    double at_most = std::numeric_limits<double>::infinity(),
+                                                    EndMinima ends = EndMinima::probed);
 
 }  // namespace wavecontact::detail
