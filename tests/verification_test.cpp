@@ -80,7 +80,8 @@ BOOST_AUTO_TEST_CASE(a_well_that_cannot_reach_zero_is_left_out) {
 // A minimum at an end sample, as at a zone's end, where a gap left penetrating by an end
 // condition met to 1e-3 dips like -a d + d^(3/2) (d from the end): the dip, 1.5e-10 deep at
 // 4.4e-7 from the end, lies wholly within the first of the samples 0.1 apart, and is found by
-// the probes towards the end at either end of the samples, then refined by Brent's method.
+// the probes towards the end at either end of the samples, then refined by Brent's method;
+// taken as sampled, it is not looked for.
 BOOST_AUTO_TEST_CASE(a_dip_beside_an_end_sample_is_found) {
   const double a = 1e-3, bottom = std::pow(2 * a / 3, 2), depth = -4 * a * a * a / 27;
   for (const bool at_right : {false, true}) {
@@ -98,6 +99,14 @@ BOOST_AUTO_TEST_CASE(a_dip_beside_an_end_sample_is_found) {
     // Brent's method to 40 bits: the bottom's place within 2.6e-9 (its value to 4e-15).
     BOOST_TEST(std::fabs(minima[0].first - end) == bottom, boost::test_tools::tolerance(0.02));
     BOOST_TEST(minima[0].second == depth, boost::test_tools::tolerance(1e-4));
+    // Taken as sampled (a zone's pressure), the end sample stands, f not called.
+    int calls = 0;
+    const auto counted = [&](double x) { return ++calls, f(x); };
+    const auto sampled = detail::local_minima(xs, ys, batch(counted), 0.0, detail::EndMinima::as_sampled);
+    BOOST_TEST_REQUIRE(sampled.size() == 1u);
+    BOOST_TEST(sampled[0].first == end);
+    BOOST_TEST(sampled[0].second == 0.0);
+    BOOST_TEST(calls == 0);
   }
 }
 

@@ -58,11 +58,10 @@ std::vector<std::pair<double, double>> local_minima(const std::vector<double>& x
     const double rise = std::max(i > 0 ? values[i - 1] : values[i], i + 1 < n ? values[i + 1] : values[i]) - values[i];
     if (values[i] - rise > at_most) continue;
     std::pair<double, double> best{xs[i], values[i]};
-    const bool at_an_end = i == 0 || i + 1 == n;
-    if (n > 1 && at_an_end && ends == EndMinima::probed) {
-      best = towards_the_end(f, xs[i], values[i], xs[i == 0 ? 1 : n - 2]);
-    } else if (n > 1) {
-      const auto refined = brent(f, xs[i > 0 ? i - 1 : i], xs[i + 1 < n ? i + 1 : i]);
+    if (i == 0 || i + 1 == n) {
+      if (n > 1 && ends == EndMinima::probed) best = towards_the_end(f, xs[i], values[i], xs[i == 0 ? 1 : n - 2]);
+    } else {
+      const auto refined = brent(f, xs[i - 1], xs[i + 1]);
       if (refined.second < best.second) best = refined;
     }
     minima.push_back(best);
@@ -94,7 +93,8 @@ ZoneCheck check_zone(const ContactSolution& s, std::size_t k) {
   }
   // Only a minimum that may fall below 0 can be a tension, or the lowest pressure reported.
   check.minima = local_minima(
-      xs, ps, [&](const double* x, double* p, std::size_t count) { s.pressures(x, p, count); }, 0.0, EndMinima::brent);
+      xs, ps, [&](const double* x, double* p, std::size_t count) { s.pressures(x, p, count); }, 0.0,
+      EndMinima::as_sampled);
   return check;
 }
 

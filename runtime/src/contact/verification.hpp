@@ -42,14 +42,15 @@ double highest_sampled_pressure(const ContactSolution& solution);
 // A function evaluated at many points at once: f(x, values, count).
 using BatchFunction = std::function<void(const double*, double*, std::size_t)>;
 
-// How local_minima refines a minimum at the first or last sample: probed towards that end at
+// How local_minima takes a minimum at the first or last sample: probed towards that end at
 // end_probes points, each half as far from it as the one before, in one batch, a probe below
 // the end starting Brent's method between the probes beside it (the gap, whose ends are
-// zones' ends, the top or the valley); or by Brent's method between the end and its
-// neighbour, like a minimum between two samples (a zone's pressure: there the probes also
-// find the wiggles of a zone's series finer than its last node spacing, at an end next to
-// a kink's window, and each is then cut as a tension, over and over).
-enum class EndMinima { probed, brent };
+// zones' ends, the top or the valley); or the sample as it is (a zone's pressure, sampled
+// three times a node interval like the nodes, so that its end sample's neighbour lies a
+// ninth of the last node spacing from the end: closer, the series resolves nothing, and
+// probes found a wiggle of a zone's series there, at an end next to a kink's window, which
+// was then cut as a tension over and over).
+enum class EndMinima { probed, as_sampled };
 inline constexpr int end_probes = 24;
 
 // The local minima of f over the samples (x sorted): (x, f(x)) pairs; only those that may lie
