@@ -42,26 +42,19 @@ double highest_sampled_pressure(const ContactSolution& solution);
 // A function evaluated at many points at once: f(x, values, count).
 using BatchFunction = std::function<void(const double*, double*, std::size_t)>;
 
-// How local_minima takes a minimum at the first or last sample: probed towards that end at
-// end_probes points, each half as far from it as the one before, in one batch, a probe below
-// the end starting Brent's method between the probes beside it (the gap, whose ends are
-// zones' ends, the top or the valley); or the sample as it is (a zone's pressure, sampled
-// three times a node interval like the nodes, so that its end sample's neighbour lies a
-// ninth of the last node spacing from the end: closer, the series resolves nothing, and
-// probes found a wiggle of a zone's series there, at an end next to a kink's window, which
-// was then cut as a tension over and over).
-enum class EndMinima { probed, as_sampled };
-inline constexpr int end_probes = 24;
-
 // The local minima of f over the samples (x sorted): (x, f(x)) pairs; only those that may lie
 // at or below `at_most`. The lowest sample of a parabola misses its bottom by at most a
 // quarter of its rise to the higher neighbour at even spacing, by less than that rise while
 // neighbouring spacings differ less than 4.8-fold: a well sampled higher than at_most by that
 // rise is left out. A minimum between two samples is refined by Brent's method between its
-// neighbours; one at an end as `ends` says.
+// neighbours. A minimum at the first or last sample is probed towards that end in one batch,
+// at up to end_probes points each half as far from it as the one before, none closer than
+// `closest` (the gap: 0; a zone's pressure: its nearest node's distance from the end); only
+// a probe below the end starts Brent's method, between the probes beside it.
 std::vector<std::pair<double, double>> local_minima(const std::vector<double>& xs, const std::vector<double>& values,
                                                     const BatchFunction& f,
                                                     double at_most = std::numeric_limits<double>::infinity(),
-                                                    EndMinima ends = EndMinima::probed);
+                                                    double closest = 0);
+inline constexpr int end_probes = 24;
 
 }  // namespace wavecontact::detail
