@@ -28,10 +28,10 @@ std::vector<double> samples(double lo, double hi, int count) {
   return xs;
 }
 
-// f at a batch of points, one at a time.
+// f at a batch of points, one at a time (f copied: the batch may outlive a temporary).
 template <class F>
-detail::BatchFunction batch(const F& f) {
-  return [&f](const double* x, double* values, std::size_t count) {
+detail::BatchFunction batch(F f) {
+  return [f](const double* x, double* values, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) values[i] = f(x[i]);
   };
 }
