@@ -76,7 +76,10 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
       for (int which = 0; which < 2; ++which) {
         if ((which == 0 && !lz.a_free) || (which == 1 && !lz.b_free)) continue;
         const double dh = which == 0 ? g.dh_da() : g.dh_db(), dm = which == 0 ? g.dm_da() : g.dm_db();
-        const double rate = which == 0 ? lz.a_rate : lz.b_rate;  // d(angle) / d(unknown)
+        // d(angle)/d(unknown) where the end is now: the unknown is 1 -+ s in units of the
+        // zone's half-width at the start, d(1 -+ s)/dx = +-sin x.
+        const bool upper = which == 0 ? lz.a_upper : lz.b_upper;
+        const double rate = (upper ? 1 : -1) * lz.end_scale / std::sin(which == 0 ? g.a : g.b);
         std::vector<double> motion(static_cast<std::size_t>(M)), T(static_cast<std::size_t>(M));
         for (int i = 0; i < M; ++i) {
           const std::size_t u = static_cast<std::size_t>(i);

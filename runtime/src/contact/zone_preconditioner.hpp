@@ -2,12 +2,14 @@
 // block of the Jacobian with the other zones frozen, solved exactly, and the coupling of the
 // zones' T_0 rows through their loads W_l = pi h_l d_l0 and C, solved exactly by Woodbury's
 // identity (a dense system of one unknown a zone, and C). The far fields beyond the loads'
-// are smooth and small: GMRES takes them.
+// are smooth and small: GMRES takes them. A zone alone, without a kink correction, has no
+// far field: the preconditioner is then the Jacobian itself (ZoneSystem::linear_solve).
 //
 // A zone's block is an arrowhead: its coefficients meet their own collocation rows on the
 // diagonal (log(2/h) for T_0, 1 for T_j: row j is scaled by j), the ends add a column each (the own potential's
-// change with h, and the nodes' motion through the field), the end conditions a row each. It
-// is solved through the Schur complement on the ends (at most 2 x 2): O(nodes) a zone.
+// change with h, and the nodes' motion through the field, at the ends' present places), the
+// end conditions a row each. It is solved through the Schur complement on the ends (at most
+// 2 x 2): O(nodes) a zone.
 #pragma once
 
 #include <vector>

@@ -90,9 +90,6 @@ SystemLayout ZoneSystem::layout(const Configuration& c, bool ends_fixed) const {
     lz.kink_window = z.kink_window;
     lz.end_scale = z.geometry.h;
     lz.a_upper = z.geometry.a <= pi / 2, lz.b_upper = z.geometry.b <= pi / 2;
-    // 1 -+ s = 2 sin^2(x/2), 2 cos^2(x/2): d(1 -+ s)/dx = +-sin x.
-    lz.a_rate = (lz.a_upper ? 1 : -1) * lz.end_scale / std::sin(z.geometry.a);
-    lz.b_rate = (lz.b_upper ? 1 : -1) * lz.end_scale / std::sin(z.geometry.b);
     lz.row_scale = std::max({own_potential(z), z.geometry.h * tiny, rounding[k] / rounding_reach});
     largest_row = std::max(largest_row, lz.row_scale);
     at += static_cast<std::size_t>(lz.block());

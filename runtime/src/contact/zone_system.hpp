@@ -38,7 +38,6 @@ struct SystemLayout {
     double end_scale = 1, row_scale = 1;
     bool a_free = false, b_free = false;    // the ends that are unknowns (else fixed at a, b)
     bool a_upper = false, b_upper = false;  // in the upper half: held as 1 - s (else 1 + s)
-    double a_rate = 0, b_rate = 0;          // d(x^ of the end) / d(its unknown), at the start
     double a = 0, b = 0;
     double kink_window = 0;  // carried through (ZoneUnknowns)
     int block() const { return free_ends + count; }
