@@ -15,9 +15,9 @@ Eigen::VectorXd ZonePreconditioner::Block::solve(const double* r) const {
   Eigen::VectorXd y(ends + count);
   Eigen::VectorXd Dr(count);
   for (int j = 0; j < count; ++j) Dr[j] = r[j] / diagonal[static_cast<std::size_t>(j)];
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(ends);
+  EndVector e = EndVector::Zero(ends);
   if (ends > 0) {
-    Eigen::VectorXd rhs = S * Dr;
+    EndVector rhs = S * Dr;
     for (int i = 0; i < ends; ++i) rhs[i] -= r[count + i];
     e = schur.solve(rhs);
   }
@@ -96,7 +96,7 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
       }
       Eigen::MatrixXd DE = b.E;
       for (int j = 0; j < M; ++j) DE.row(j) /= b.diagonal[static_cast<std::size_t>(j)];
-      b.schur.compute(b.S * DE);
+      b.schur.compute(EndMatrix(b.S * DE));
     }
     std::vector<double> e0(static_cast<std::size_t>(f + M), 0.0);
     e0[0] = 1 / lz.row_scale;  // the block's first row: T_0

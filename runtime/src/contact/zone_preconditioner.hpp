@@ -30,13 +30,16 @@ class ZonePreconditioner {
   std::vector<double> apply(const std::vector<double>& r) const;
 
  private:
+  // At most two free ends a zone: their vectors and the Schur complement without the heap.
+  using EndVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 2, 1>;
+  using EndMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 2, 2>;
   // [E D; 0 S] [e; d] = [r_c; r_s], D diagonal: d = D^-1 (r_c - E e), (S D^-1 E) e = S D^-1 r_c - r_s.
   struct Block {
     std::size_t at = 0;
     int ends = 0, count = 0;
     std::vector<double> diagonal;  // D
     Eigen::MatrixXd E, S;          // count x ends, ends x count
-    Eigen::FullPivLU<Eigen::MatrixXd> schur;
+    Eigen::FullPivLU<EndMatrix> schur;
     Eigen::VectorXd load_row;  // dW / d(unknowns), scaled, in the unknowns' order
     Eigen::VectorXd g;         // B^-1 e_0 / row_scale
     double delta = 0;          // load_row . g
