@@ -31,16 +31,34 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
                                        const std::vector<std::vector<double>>& external_slope, double P)
     : C_scale_(L.C_scale), C_at_(L.C_at) {
   const std::size_t K = c.zones.size();
-  const Eigen::Index n = static_cast<Eigen::Index>(K);
+  moments_ = K <= most_zones_with_first_moments ? 2 : 1;
+  const Eigen::Index per_zone = moments_, n = static_cast<Eigen::Index>(K) * per_zone;
   coupling_ = Eigen::MatrixXd::Zero(n, n);
-  for_each_index(K, zones_for_threads, [&](std::size_t k) {  // each row on its own
+  for_each_index(K, zones_for_threads, [&](std::size_t k) {  // each zone's rows on their own
+    // The field's T_0 and T_1 coefficients over zone k from its values at the two Chebyshev
+    // points tau = +-1/sqrt(2) (sixteen points gave the same |J M^-1 - I|); its T_0
+    // coefficient alone, the loads' coupling only, from its value at the middle.
     const ZoneGeometry& gk = c.zones[k].geometry;
-    const HalfAngle centre = HalfAngle::of((gk.a + gk.b) / 2);
+    const double tau = std::sqrt(0.5);
+    const std::vector<double> x = per_zone > 1 ? gk.angles_of({tau, -tau}) : std::vector<double>{(gk.a + gk.b) / 2};
     for (std::size_t l = 0; l < K; ++l) {
       if (l == k) continue;
       const ZoneGeometry& gl = c.zones[l].geometry;
-      const double unit[1] = {1 / (pi * gl.h)};  // d_0 of a unit load
-      coupling_(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(l)) = far_potential(gl, unit, 1, centre);
+      for (Eigen::Index a = 0; a < per_zone; ++a) {
+        // d of a unit moment: a unit load (d_0 = 1/(pi h)), a unit first moment about the
+        // zone's centre ((pi/2) h^2 d_1).
+        const double unit[2] = {a == 0 ? 1 / (pi * gl.h) : 0.0, a == 1 ? 2 / (pi * gl.h * gl.h) : 0.0};
+        const Eigen::Index row = static_cast<Eigen::Index>(k) * per_zone,
+                           column = static_cast<Eigen::Index>(l) * per_zone + a;
+        if (per_zone == 1) {
+          coupling_(row, column) = far_potential(gl, unit, 1, HalfAngle::of(x[0]));
+          continue;
+        }
+        const double plus = far_potential(gl, unit, 2, HalfAngle::of(x[0]));
+        const double minus = far_potential(gl, unit, 2, HalfAngle::of(x[1]));
+        coupling_(row, column) = (plus + minus) / 2;
+        coupling_(row + 1, column) = (plus - minus) * tau;
+      }
     }
   });
   for (std::size_t k = 0; k < K; ++k) {
@@ -49,7 +67,8 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
     const ZoneGeometry& g = z.geometry;
     const int M = lz.count, f = lz.free_ends;
     Block b;
-    b.at = lz.at, b.ends = f, b.count = M;
+    b.at = lz.at, b.ends = f, b.count = M, b.row_scale = lz.row_scale;
+    b.first_moment_of_d1 = pi / 2 * g.h * lz.row_scale;
     const double lambda = self_logarithm(g);
     b.diagonal.resize(static_cast<std::size_t>(M));
     b.diagonal[0] = lambda;
@@ -62,8 +81,6 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
     // End columns: the own potential's change with h, minus the transform of the field's
     // slope at the nodes times their motion.
     b.E = Eigen::MatrixXd(M, f);
-    b.load_row = Eigen::VectorXd::Zero(f + M);
-    b.load_row[f] = pi * lz.row_scale;  // W = pi h d_0
     if (f > 0) {
       const std::vector<double>& tau = chebyshev::nodes(M);
       const std::vector<double> x = g.angles_of(tau);
@@ -92,49 +109,63 @@ ZonePreconditioner::ZonePreconditioner(const SurfaceModel& surface, const Config
           const double own = j == 0 ? -z.d[0] * dh : 0.0;
           b.E(j, column) = (j == 0 ? 1 : j) * (own - T[u]) * rate / lz.row_scale;
         }
+        // The first moment W (m - m0) + (pi/2) h^2 d_1 moves with the end at fixed h d.
+        b.first_moment_of_end[static_cast<std::size_t>(column)] =
+            (pi * g.h * z.d[0] * dm + pi / 2 * g.h * z.d[1] * dh) * rate;
         ++column;
       }
       Eigen::MatrixXd DE = b.E;
       for (int j = 0; j < M; ++j) DE.row(j) /= b.diagonal[static_cast<std::size_t>(j)];
       b.schur.compute(EndMatrix(b.S * DE));
     }
-    std::vector<double> e0(static_cast<std::size_t>(f + M), 0.0);
-    e0[0] = 1 / lz.row_scale;  // the block's first row: T_0
-    b.g = b.solve(e0.data());
-    b.delta = b.load_row.dot(b.g);
+    for (int row = 0; row < moments_; ++row) {
+      std::vector<double> e(static_cast<std::size_t>(f + M), 0.0);
+      e[static_cast<std::size_t>(row)] = 1 / lz.row_scale;  // the block's rows T_0, T_1
+      b.g[static_cast<std::size_t>(row)] = b.solve(e.data());
+      for (int a = 0; a < moments_; ++a) b.delta(a, row) = b.moment(b.g[static_cast<std::size_t>(row)], a);
+    }
     blocks_.push_back(std::move(b));
   }
-  // The coarse system: (I + Delta G) w - Delta 1 c = t, (2/P) 1^T w = r_load.
+  // The coarse system in the moments q and C: q_k + Delta_k ((G q)_k - C e_0) = the moments of
+  // the blocks' own solves, (2/P) (the sum of the loads) = r_load.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  for (Eigen::Index k = 0; k < n; ++k) {
-    const Block& b = blocks_[static_cast<std::size_t>(k)];
-    A(k, k) += 1;
-    A.row(k).head(n) += b.delta * coupling_.row(k);
-    A(k, n) = -b.delta * C_scale_;
-    A(n, k) = 2 / P;
+  for (std::size_t k = 0; k < K; ++k) {
+    const Block& b = blocks_[k];
+    const Eigen::Index at = static_cast<Eigen::Index>(k) * per_zone;
+    for (Eigen::Index a = 0; a < per_zone; ++a) {
+      A(at + a, at + a) += 1;
+      for (Eigen::Index row = 0; row < per_zone; ++row)
+        A.row(at + a).head(n) += b.delta(a, row) * coupling_.row(at + row);
+      A(at + a, n) = -b.delta(a, 0) * C_scale_;
+    }
+    A(n, at) = 2 / P;
   }
   coarse_.compute(A);
 }
 
 std::vector<double> ZonePreconditioner::apply(const std::vector<double>& r) const {
-  const Eigen::Index K = static_cast<Eigen::Index>(blocks_.size());
+  const std::size_t K = blocks_.size();
+  const Eigen::Index per_zone = moments_, n = static_cast<Eigen::Index>(K) * per_zone;
   std::vector<double> y(r.size(), 0.0);
-  std::vector<Eigen::VectorXd> local(blocks_.size());
-  Eigen::VectorXd rhs(K + 1);
-  for (Eigen::Index k = 0; k < K; ++k) {
-    const Block& b = blocks_[static_cast<std::size_t>(k)];
-    local[static_cast<std::size_t>(k)] = b.solve(r.data() + b.at);
-    rhs[k] = b.load_row.dot(local[static_cast<std::size_t>(k)]);
+  std::vector<Eigen::VectorXd> local(K);
+  Eigen::VectorXd rhs(n + 1);
+  for (std::size_t k = 0; k < K; ++k) {
+    const Block& b = blocks_[k];
+    local[k] = b.solve(r.data() + b.at);
+    for (Eigen::Index a = 0; a < per_zone; ++a)
+      rhs[static_cast<Eigen::Index>(k) * per_zone + a] = b.moment(local[k], static_cast<int>(a));
   }
-  rhs[K] = r[C_at_];
-  const Eigen::VectorXd wc = coarse_.solve(rhs);
-  const Eigen::VectorXd field = coupling_ * wc.head(K);
-  for (Eigen::Index k = 0; k < K; ++k) {
-    const Block& b = blocks_[static_cast<std::size_t>(k)];
-    const Eigen::VectorXd yk = local[static_cast<std::size_t>(k)] - b.g * (field[k] - C_scale_ * wc[K]);
+  rhs[n] = r[C_at_];
+  const Eigen::VectorXd qc = coarse_.solve(rhs);
+  const Eigen::VectorXd field = coupling_ * qc.head(n);
+  for (std::size_t k = 0; k < K; ++k) {
+    const Block& b = blocks_[k];
+    const Eigen::Index at = static_cast<Eigen::Index>(k) * per_zone;
+    Eigen::VectorXd yk = local[k] - b.g[0] * (field[at] - C_scale_ * qc[n]);
+    if (per_zone > 1) yk -= b.g[1] * field[at + 1];
     for (int i = 0; i < b.ends + b.count; ++i) y[b.at + static_cast<std::size_t>(i)] = yk[i];
   }
-  y[C_at_] = wc[K];
+  y[C_at_] = qc[n];
   return y;
 }
 
