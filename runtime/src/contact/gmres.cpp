@@ -28,7 +28,7 @@ std::vector<double> gmres(const LinearMap& A, const LinearMap& M_inverse, const 
     bool converged = false;  // the rotated residual |g_k|, which equals |b - A x|, met the tolerance
     std::vector<std::vector<double>> V(static_cast<std::size_t>(m + 1)), Z(static_cast<std::size_t>(m));
     // The Hessenberg matrix by columns, in one block: a Newton step's systems converge in 2 to
-    // 10 of the 60 columns, and a row of its own each was most of the solver's allocations.
+    // 10 of the 60 columns, and a row of its own each was a quarter of a map's allocations.
     std::vector<double> hessenberg(static_cast<std::size_t>((m + 1) * m));
     const auto H = [&](std::size_t row, std::size_t column) -> double& {
       return hessenberg[column * static_cast<std::size_t>(m + 1) + row];
