@@ -15,12 +15,13 @@ Eigen::VectorXd ZonePreconditioner::Block::solve(const double* r) const {
   Eigen::VectorXd y(ends + count);
   Eigen::VectorXd Dr(count);
   for (int j = 0; j < count; ++j) Dr[j] = r[j] / diagonal[static_cast<std::size_t>(j)];
-  EndVector e = EndVector::Zero(ends);
-  if (ends > 0) {
-    EndVector rhs = S * Dr;
-    for (int i = 0; i < ends; ++i) rhs[i] -= r[count + i];
-    e = schur.solve(rhs);
+  if (ends == 0) {
+    y = Dr;  // E has no column (and no data: its product would offset a null pointer)
+    return y;
   }
+  EndVector rhs = S * Dr;
+  for (int i = 0; i < ends; ++i) rhs[i] -= r[count + i];
+  const EndVector e = schur.solve(rhs);
   const Eigen::VectorXd Ee = E * e;
   for (int i = 0; i < ends; ++i) y[i] = e[i];
   for (int j = 0; j < count; ++j) y[ends + j] = (r[j] - Ee[j]) / diagonal[static_cast<std::size_t>(j)];
