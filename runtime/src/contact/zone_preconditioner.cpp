@@ -12,13 +12,10 @@ namespace wavecontact::detail {
 Eigen::VectorXd ZonePreconditioner::Block::solve(const double* r) const {
   // r: the block's rows (collocation, end conditions); the result in its unknowns' order
   // (ends, coefficients).
-  Eigen::VectorXd y(ends + count);
   Eigen::VectorXd Dr(count);
   for (int j = 0; j < count; ++j) Dr[j] = r[j] / diagonal[static_cast<std::size_t>(j)];
-  if (ends == 0) {
-    y = Dr;  // E has no column (and no data: its product would offset a null pointer)
-    return y;
-  }
+  if (ends == 0) return Dr;  // E has no column (and no data: its product would offset a null pointer)
+  Eigen::VectorXd y(ends + count);
   EndVector rhs = S * Dr;
   for (int i = 0; i < ends; ++i) rhs[i] -= r[count + i];
   const EndVector e = schur.solve(rhs);
