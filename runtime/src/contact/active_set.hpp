@@ -28,7 +28,12 @@ inline constexpr double working_residual = 1e-10;  // Newton's tolerance while s
 inline constexpr double consistent_residual = 1e-8;
 inline constexpr double gap_tolerance = 1e-9;       // of the height range
 inline constexpr double pressure_tolerance = 1e-9;  // of the largest pressure
-inline constexpr int most_nodes = 4096;
+// A zone's nodes at most, once refined (and full contact's). The roughness H cos(n x^) is a
+// polynomial of degree n in s = cos x^, which a zone over most of the period needs nearly all
+// of: a zone at the cap is estimated against half as many, and up to n = max_roughness_n =
+// 4096 half of 16384 still resolves it (with a cap of 4096, wide zones at n above about 2048
+// were estimated against 2048 nodes, 3e-3 to 7e-2 for contacts right within 1e-11).
+inline constexpr int most_nodes = 16384;
 // A zone across a kink: its window may be as narrow as the sliver between the kink and an end
 // (kink_correction.hpp), and Chebyshev nodes resolve it only where they crowd towards that end.
 inline constexpr int most_kinked_nodes = 32768;
