@@ -41,14 +41,17 @@ std::vector<double> legendre_to(int n, double c) {
   return P;
 }
 
+// cos x^ at x.
+double cos_angle(double x) { return std::cos(pi * x / b1); }
+
 // The roughness's single zone of half-width a: its pressure at x (|x| < a) and its load.
 struct RoughnessZone {
   double H2, a;
   int n;
-  std::vector<double> P = legendre_to(n, std::cos(pi* a / b1));
+  std::vector<double> P = legendre_to(n, cos_angle(a));
 
   double pressure(double x) const {
-    const double q = pi * x / b1, Ca = std::cos(pi * a / b1);
+    const double q = pi * x / b1, Ca = cos_angle(a);
     double sum = 0;
     for (int j = 0; j < n; ++j) sum += P[static_cast<std::size_t>(n - 1 - j)] * std::cos((j + 0.5) * q);
     return pi / b1 * E * H2 * n / std::sqrt(2.0) * std::sqrt(std::max(0.0, std::cos(q) - Ca)) * sum;
