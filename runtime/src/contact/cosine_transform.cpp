@@ -20,17 +20,43 @@ std::mutex& planner_mutex() {  // FFTW's planner is not reentrant; its plans' ex
 
 CosineTransform::CosineTransform(std::size_t points, Kind kind) : data_(points) {
   const std::lock_guard<std::mutex> lock(planner_mutex());
-  plan_ = fftw_plan_r2r_1d(static_cast<int>(points), data_.data(), data_.data(),
-                           kind == Kind::dct1   ? FFTW_REDFT00
-                           : kind == Kind::dct2 ? FFTW_REDFT10
-                                                : FFTW_REDFT01,
-                           FFTW_ESTIMATE);
-  if (plan_ == nullptr) throw std::runtime_error("wavecontact: FFTW could not plan a cosine transform");
+  if (kind == Kind::dct1) {
+    if (points < 2) throw std::logic_error("CosineTransform: a DCT-I of fewer than 2 points");
+    const std::size_t N = points - 1;
+    extension_ = fftw_alloc_real(2 * N);
+    spectrum_ = fftw_alloc_complex(N + 1);
+    plan_ = extension_ && spectrum_
+                ? fftw_plan_dft_r2c_1d(static_cast<int>(2 * N), extension_, spectrum_, FFTW_ESTIMATE)
+                : nullptr;
+  } else {
+    plan_ = fftw_plan_r2r_1d(static_cast<int>(points), data_.data(), data_.data(),
+                             kind == Kind::dct2 ? FFTW_REDFT10 : FFTW_REDFT01, FFTW_ESTIMATE);
+  }
+  if (plan_ == nullptr) {
+    fftw_free(extension_);
+    fftw_free(spectrum_);
+    throw std::runtime_error("wavecontact: FFTW could not plan a cosine transform");
+  }
 }
 
 CosineTransform::~CosineTransform() {
   const std::lock_guard<std::mutex> lock(planner_mutex());
   fftw_destroy_plan(plan_);
+  fftw_free(extension_);
+  fftw_free(spectrum_);
+}
+
+void CosineTransform::apply() {
+  if (extension_ == nullptr) {
+    fftw_execute(plan_);
+    return;
+  }
+  // x_0 .. x_N, then x_{N-1} .. x_1: the period 2N of the even sequence; its transform is real.
+  const std::size_t N = data_.size() - 1;
+  std::copy(data_.begin(), data_.end(), extension_);
+  std::reverse_copy(data_.begin() + 1, data_.end() - 1, extension_ + N + 1);
+  fftw_execute(plan_);
+  for (std::size_t k = 0; k <= N; ++k) data_[k] = spectrum_[k][0];
 }
 
 CosineTransform& planned_transform(std::size_t points, CosineTransform::Kind kind) {
