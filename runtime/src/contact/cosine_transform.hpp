@@ -44,7 +44,8 @@ class CosineTransform {
 // The transform of this size and kind, planned once a thread: planning (FFTW_ESTIMATE) costs
 // 0.06 to 1.1 ms, running one of the contact solver's sizes a few microseconds. The plans of
 // at most 64 sizes a thread are kept (zones take many sizes over a long run; a plan of 32768
-// points holds 256 KB). The reference is valid until this thread's next call.
+// points holds 256 KB, a DCT-I's five times as much with its real transform's buffers). The
+// reference is valid until this thread's next call.
 CosineTransform& planned_transform(std::size_t points, CosineTransform::Kind kind);
 
 // sum_j c_j cos(j pi k / N) at k = 0 .. N, for c of at most N + 1 terms.
