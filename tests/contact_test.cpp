@@ -357,7 +357,11 @@ BOOST_AUTO_TEST_CASE(zone_across_the_kink_converges_fast) {
 // sweep 247 with 24 loads, --max-n 8; seed 25, sweep 249 with 32 loads, --max-n 32): a window
 // that narrow has too few of the zone's working nodes for the steep order, which left a
 // tension of -0.002 and -0.009 at the end (curvature 1e12); cut, it came back, and no contact
-// was found (7 s and 40 s). Narrow windows keep the gentle order.
+// was found (7 s and 40 s). Narrow windows keep the gentle order. The third (campaign seed
+// 97, sweep 9 with 16 loads, --max-n 1024) ends 8.4e-5 past the kink, window 2.2e-5: its
+// refinement stopped at 16384 nodes, where the change had grown from 1.0e-8 to 1.9e-8 with
+// 13 and 26 nodes in the window, and the contact was reported 1.9 times the tolerance; it now
+// doubles on to 32768 (51 in the window), where the change is 3.9e-10.
 BOOST_AUTO_TEST_CASE(narrow_kink_window_next_to_an_end) {
   struct Case {
     double m;
@@ -369,12 +373,18 @@ BOOST_AUTO_TEST_CASE(narrow_kink_window_next_to_an_end) {
       {21.493068101571854,
        {{0.1235393730186317, 16}, {0.016606797370300051, 12}, {0.030546473376117707, 8}},
        13.217681094505776},
+      {22.341036088024939,
+       {{0.2, 2}, {0.15663357880747877, 114}, {0.061836893997547542, 4}, {0.033406600560733489, 386}},
+       99.518463115087101},
   };
   for (const Case& k : cases) {
     const Contact c = solve_contact(Surface(WavinessParams{1, 10, k.m, 1}, k.roughness), k.P, SolverOptions(1e-8));
     const std::string what = "m = " + std::to_string(k.m) + " at P = " + std::to_string(k.P);
-    BOOST_TEST(c.zones().front().x_end > 5.0, what);
-    BOOST_TEST(c.zones().front().x_end < 5.0 + 1e-3, what);
+    const auto top = std::find_if(c.zones().begin(), c.zones().end(),
+                                  [](const ContactZone& z) { return z.x_start < 0 && z.x_end > 0; });
+    BOOST_TEST_REQUIRE((top != c.zones().end()), what);
+    BOOST_TEST(top->x_end > 5.0, what);
+    BOOST_TEST(top->x_end < 5.0 + 1e-3, what);
     BOOST_TEST(c.error_estimate() <= 1e-8, what << ": estimate " << c.error_estimate());
     check_contact(c, 10, what);
   }
