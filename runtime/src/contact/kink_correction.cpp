@@ -184,6 +184,11 @@ std::shared_ptr<const KinkCorrection> KinkCorrection::of(const SurfaceModel& sur
   return nullptr;
 }
 
+double KinkCorrection::nodes_within(const ZoneGeometry& zone, std::size_t nodes) const {
+  const auto angle = [&](double s) { return std::acos(std::clamp((s - zone.m) / zone.h, -1.0, 1.0)); };
+  return static_cast<double>(nodes) / pi * std::fabs(angle(s0_ - r_) - angle(s0_ + r_));
+}
+
 double KinkCorrection::density(double t) const {
   const double u = (t - s0_) / r_;
   if (!(std::fabs(u) < 1) || t == s0_) return 0;

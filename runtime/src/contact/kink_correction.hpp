@@ -50,6 +50,9 @@ class KinkCorrection {
   void potentials(const double* x, std::size_t count, double* out) const;
   // Int q_k dt: its part of the zone's load.
   double load() const { return load_; }
+  // How many of the zone's `nodes` Chebyshev nodes lie within the window: nodes/pi times the
+  // angle acos(tau), tau = (s - m)/h, spans there.
+  double nodes_within(const ZoneGeometry& zone, std::size_t nodes) const;
 
   KinkCorrection(const Kink& kink, double r);
 

@@ -9,6 +9,7 @@
 
 #include "active_set.hpp"
 #include "constants.hpp"
+#include "kink_correction.hpp"
 #include "trace.hpp"
 #include "support/parallel.hpp"
 #include "verification.hpp"
@@ -42,20 +43,11 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
   return difference;
 }
 
-// Whether a zone's kink window holds fewer than least_window_nodes of its N Chebyshev nodes:
-// those whose tau = (s - m)/h lies within the window, N/pi times the angle acos(tau) spans
-// there. False for a zone without a window.
+// Whether a zone's kink window holds fewer than least_window_nodes of its nodes (false for a
+// zone without a window).
 bool window_unresolved(const SurfaceModel& surface, const ZoneUnknowns& z) {
-  const double r = z.kink_window;
-  if (!(r > 0)) return false;
-  const ZoneGeometry& g = z.geometry;
-  for (const Kink& kink : surface.kinks) {
-    if (!(kink.angle > g.a && kink.angle < g.b)) continue;
-    const auto angle = [&](double s) { return std::acos(std::clamp((s - g.m) / g.h, -1.0, 1.0)); };
-    const double inside = static_cast<double>(z.d.size()) / pi * std::fabs(angle(kink.s - r) - angle(kink.s + r));
-    return inside < least_window_nodes;
-  }
-  return false;
+  const std::shared_ptr<const KinkCorrection> window = KinkCorrection::of(surface, z.geometry, z.kink_window);
+  return window && window->nodes_within(z.geometry, z.d.size()) < least_window_nodes;
 }
 
 // How far rounding moves the contact: the response to a shift of each zone's T_0 row by the
