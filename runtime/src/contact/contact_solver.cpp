@@ -246,7 +246,7 @@ SingleZoneResult check_single_zone(const std::shared_ptr<const SurfaceModel>& su
     const std::vector<double> x = g.angles_of(chebyshev::nodes(count));
     const double window = KinkCorrection::radius_for(*surface, g);
     const std::shared_ptr<const KinkCorrection> kink = KinkCorrection::of(*surface, g, window);
-    const std::vector<double> G = right_hand_side(*surface, x, {}, kink.get());
+    const std::vector<double> G = right_hand_side(*surface, g, x, {}, kink.get());
     ZoneUnknowns z{g, std::vector<double>(static_cast<std::size_t>(count)), window};
     double alternating = 0;
     for (int j = 1; j < count; ++j) {

@@ -123,7 +123,8 @@ void FieldTree::compute_moments(const Node& node) const {
   for (int k = 1; k < order; ++k) node.moments_over_k[static_cast<std::size_t>(k)] /= k;
 }
 
-FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const {
+FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes,
+                                     const double* offsets) const {
   const std::size_t count = x.size();
   Batch out;
   out.difference.assign(count, 0.0);
@@ -136,7 +137,7 @@ FieldTree::Batch FieldTree::evaluate(std::size_t skip, const std::vector<double>
   std::vector<double> from_reference(count);  // s_i - s_ref
   for (std::size_t i = 0; i < count; ++i) {
     half[i] = HalfAngle::of(x[i]);
-    from_reference[i] = difference(Abscissa::of_angle(half[i]), reference);
+    from_reference[i] = offsets ? offsets[i] : difference(Abscissa::of_angle(half[i]), reference);
   }
   // The moments' part, before the factor -1/pi.
   double moment_reference = 0;

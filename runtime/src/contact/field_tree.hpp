@@ -46,7 +46,11 @@ class FieldTree {
     std::vector<double> difference;  // Psi(x_i) - Psi(x_ref)
     std::vector<double> slope;       // dPsi/ds at x_i, when asked for
   };
-  Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const;
+  // `offsets`, if not null, are s_i - s_ref to their own precision (a zone's nodes, placed in
+  // s: node_offsets), which the moments take; else they are taken from the angles. A zone
+  // that acts directly takes the angles.
+  Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes,
+                 const double* offsets = nullptr) const;
 
  private:
   static constexpr int order = 44;  // moments mu_0 .. mu_{order-1}

@@ -61,19 +61,30 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
     for (const Harmonic& h : roughness) slope -= h.H * h.n * std::sin(h.n * x);
     return slope;
   };
-  // Differences by products of sines: cos u - cos v = -2 sin((u + v)/2) sin((u - v)/2), and on
-  // one branch Y(c) - Y(c0) = H1 (m + 1) (c - c0) / ((1 + m |c|) (1 + m |c0|)).
-  s->height_differences = [=](const double* xs, std::size_t count, double x0, double* out) {
-    const double c0 = std::cos(x0), wave_c0 = wave(c0), denominator_c0 = 1 + m * std::fabs(c0);
+  // Differences without cancellation: on the waviness, Y(c) - Y(c0) = H1 (m + 1) (c - c0 +
+  // m (c |c0| - c0 |c|)) / ((1 + m |c|) (1 + m |c0|)), the second term 0 on one branch and of
+  // the sign of c - c0 across; each harmonic's cos(n x) - cos(n x0) = -2 sin(n x0 + u) sin u,
+  // u = n (x - x0) / 2, with n x0 as a sum of two doubles (its rounding, by a fused
+  // multiply-add, kept apart from u).
+  s->height_steps = [=](double x0, const double* ds, const double* delta, std::size_t count, double* out) {
+    const double c0 = std::cos(x0), denominator_c0 = 1 + m * std::fabs(c0);
+    struct Phase {
+      double n, H, sine, cosine, rounding;  // sin and cos of n x0 as rounded, n x0 - that
+    };
+    std::vector<Phase> phases;
+    for (const Harmonic& h : roughness) {
+      const double n = h.n, p = n * x0;
+      phases.push_back({n, h.H, std::sin(p), std::cos(p), std::fma(n, x0, -p)});
+    }
     for (std::size_t i = 0; i < count; ++i) {
-      const double x = xs[i], c = std::cos(x);
-      double dy = 0;
-      if ((c >= 0) == (c0 >= 0)) {
-        dy = H1 * (m + 1) * detail::cos_difference(x, x0) / ((1 + m * std::fabs(c)) * denominator_c0);
-      } else {
-        dy = wave(c) - wave_c0;
+      const double c = c0 + ds[i];
+      double dy = H1 * (m + 1) * (ds[i] + m * (c * std::fabs(c0) - c0 * std::fabs(c))) /
+                  ((1 + m * std::fabs(c)) * denominator_c0);
+      for (const Phase& h : phases) {
+        const double u = h.n * delta[i] / 2, sin_u = std::sin(u), cos_u = std::cos(u);
+        const double sum_sine = h.sine * cos_u + h.cosine * sin_u + h.rounding * (h.cosine * cos_u - h.sine * sin_u);
+        dy += h.H * -2 * sum_sine * sin_u;
       }
-      for (const Harmonic& h : roughness) dy += h.H * -2 * std::sin(h.n * (x + x0) / 2) * std::sin(h.n * (x - x0) / 2);
       out[i] = dy;
     }
   };
@@ -111,9 +122,9 @@ Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.
   auto s = std::make_shared<detail::SurfaceModel>();
   s->height = [e, q](double x) { return e.height(q.data(), std::cos(x)); };
   s->slope = [e, q](double x) { return -std::sin(x) * e.height_slope(q.data(), std::cos(x)); };
-  s->height_differences = [e, q](const double* xs, std::size_t count, double x0, double* out) {
-    const double y0 = e.height(q.data(), std::cos(x0));
-    for (std::size_t i = 0; i < count; ++i) out[i] = e.height(q.data(), std::cos(xs[i])) - y0;
+  s->height_steps = [e, q](double x0, const double* ds, const double*, std::size_t count, double* out) {
+    const double c0 = std::cos(x0), y0 = e.height(q.data(), c0);
+    for (std::size_t i = 0; i < count; ++i) out[i] = e.height(q.data(), c0 + ds[i]) - y0;
   };
   const double E = profile.params().E;
   if (e.branch.beta > 0) {

@@ -30,6 +30,27 @@ double end_angle(double unknown, bool upper) {
 
 std::vector<double> node_angles(const ZoneGeometry& g, int count) { return g.angles_of(chebyshev::nodes(count)); }
 
+std::vector<double> node_offsets(const ZoneGeometry& g, int count, double x_ref) {
+  // h tau_i + (m - s_ref), the centre's offset as angles_of places the nodes: (1 - s_ref) -
+  // (1 - m), 1 - m = 2 sin^2(a/2) + h, with the reference in the upper half, (1 + m) - (1 +
+  // s_ref) in the lower. (From m and cos x_ref themselves, each rounded by 1e-16, it erred by as
+  // much, which the angles near the top turn into an error like the root of the distance from
+  // it: Chebyshev coefficients of 1e-16 on a top zone 0.0018 wide, where the angles gave 1e-19.
+  // From 1 - s_i node by node, each node erred by 1e-16 away from the top.)
+  double centre = 0;
+  if (x_ref <= pi / 2) {
+    const double sa = std::sin(g.a / 2), r = std::sin(x_ref / 2);
+    centre = 2 * r * r - (2 * sa * sa + g.h);
+  } else {
+    const double cb = std::cos(g.b / 2), r = std::cos(x_ref / 2);
+    centre = (2 * cb * cb + g.h) - 2 * r * r;
+  }
+  const std::vector<double>& tau = chebyshev::nodes(count);
+  std::vector<double> offsets(tau.size());
+  for (std::size_t i = 0; i < tau.size(); ++i) offsets[i] = g.h * tau[i] + centre;
+  return offsets;
+}
+
 // The field is analytic up to the nearest other zone, a distance g in s beyond the zone's
 // nearer end: its series falls like rho^-j, rho = 1 + g/h + sqrt((g/h)(2 + g/h)) (the
 // Bernstein ellipse through that end), below 1e-17 after 39.1 / log(rho) terms.
@@ -138,8 +159,9 @@ ZoneFields::ZoneFields(const SurfaceModel& surface, const Configuration& c) : zo
   }
 }
 
-FieldTree::Batch ZoneFields::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const {
-  FieldTree::Batch batch = tree.evaluate(skip, x, x_ref, slopes);
+FieldTree::Batch ZoneFields::evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes,
+                                      const double* offsets) const {
+  FieldTree::Batch batch = tree.evaluate(skip, x, x_ref, slopes, offsets);
   std::vector<double> potential(kinked.empty() ? 0 : x.size());
   for (std::size_t l : kinked) {
     if (l == skip) continue;
@@ -160,9 +182,10 @@ FieldTree::Batch ZoneFields::at_nodes(std::size_t k, const std::vector<double>& 
     if (slopes) none.slope.assign(x.size(), 0.0);
     return none;
   }
-  if (terms > M / 4) return evaluate(k, x, x_ref, slopes);
   const ZoneGeometry& g = zones[k].geometry;
-  const FieldTree::Batch coarse = evaluate(k, node_angles(g, terms), x_ref, false);
+  if (terms > M / 4) return evaluate(k, x, x_ref, slopes, node_offsets(g, M, x_ref).data());
+  const FieldTree::Batch coarse =
+      evaluate(k, node_angles(g, terms), x_ref, false, node_offsets(g, terms, x_ref).data());
   const std::vector<double> c = chebyshev::coefficients(coarse.difference);
   // The series' second half must be at the rounding of its largest term (else a field less
   // smooth than its distance promises: the nodes themselves take it).
@@ -171,7 +194,7 @@ FieldTree::Batch ZoneFields::at_nodes(std::size_t k, const std::vector<double>& 
     largest = std::max(largest, std::fabs(c[j]));
     if (2 * j >= c.size()) tail = std::max(tail, std::fabs(c[j]));
   }
-  if (!(tail <= 1e-14 * largest)) return evaluate(k, x, x_ref, slopes);
+  if (!(tail <= 1e-14 * largest)) return evaluate(k, x, x_ref, slopes, node_offsets(g, M, x_ref).data());
   FieldTree::Batch out;
   out.at_reference = coarse.at_reference;
   out.difference.resize(x.size());
@@ -193,12 +216,16 @@ double zone_load(const Configuration& c, const ZoneFields& fields, std::size_t k
   return fields.kinks[k] ? smooth + fields.kinks[k]->load() : smooth;
 }
 
-std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vector<double>& x,
+std::vector<double> right_hand_side(const SurfaceModel& surface, const ZoneGeometry& g, const std::vector<double>& x,
                                     const FieldTree::Batch& others, const KinkCorrection* kink) {
   const std::size_t M = x.size();
   const double half_E = surface.E / 2, x_ref = x[M / 2];
   std::vector<double> values(M), G(M), kink_potential(kink ? M : 0);
-  surface.height_differences(x.data(), M, x_ref, values.data());
+  // The heights at the nodes m + h tau_i themselves, not at their angles: an angle's rounding
+  // (a few ulps) times the heights' slope is noise at every node, which d_j = j G_j / h
+  // multiplies by j / h (a zone 4e-6 wide at a tip; n = 60 at H2 = 0.2 next to the kink).
+  const std::vector<double> offsets = node_offsets(g, static_cast<int>(M), x_ref);
+  surface.height_offsets(x.data(), offsets.data(), M, x_ref, values.data());
   if (kink) kink->potentials(x.data(), M, kink_potential.data());
   for (std::size_t u = 0; u < M; ++u) {
     values[u] = half_E * values[u] - (others.difference.empty() ? 0.0 : others.difference[u]) -
@@ -222,7 +249,7 @@ std::vector<double> ZoneSystem::residual(const Configuration& c, const SystemLay
     const int M = lz.count;
     const std::vector<double> x = node_angles(zk.geometry, M);
     FieldTree::Batch others = fields.at_nodes(k, x, external_slope != nullptr);
-    std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get()),
+    std::vector<double> G = right_hand_side(surface_, zk.geometry, x, others, fields.kinks[k].get()),
                         own(static_cast<std::size_t>(M));
     G[0] += c.C;
     if (external_slope) (*external_slope)[k] = std::move(others.slope);
@@ -278,7 +305,7 @@ void ZoneSystem::relax(Configuration& c) const {
     const int M = static_cast<int>(zk.d.size());
     const std::vector<double> x = node_angles(zk.geometry, M);
     const FieldTree::Batch others = fields.at_nodes(k, x, false);
-    const std::vector<double> G = right_hand_side(surface_, x, others, fields.kinks[k].get());
+    const std::vector<double> G = right_hand_side(surface_, zk.geometry, x, others, fields.kinks[k].get());
     std::vector<double> d(static_cast<std::size_t>(M));
     const double lambda = self_logarithm(zk.geometry);
     d[0] = G[0] / (zk.geometry.h * lambda);

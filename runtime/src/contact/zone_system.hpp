@@ -58,7 +58,8 @@ struct ZoneFields {
   FieldTree tree;
   // The potential of every zone but `skip` (past the last: none) at a batch of nearby
   // points, as FieldTree::evaluate gives it (the kink corrections' slopes left out).
-  FieldTree::Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes) const;
+  FieldTree::Batch evaluate(std::size_t skip, const std::vector<double>& x, double x_ref, bool slopes,
+                            const double* offsets = nullptr) const;
   // The same of every zone but k at zone k's nodes x (node_angles, the reference x[M/2]).
   // The others' field is analytic on the zone up to the nearest other zone: where its
   // Chebyshev series needs at most a quarter of the zone's M terms (smooth_field_terms), it
@@ -72,6 +73,9 @@ struct ZoneFields {
 
 // The angles of the zone's Chebyshev nodes (chebyshev::nodes(count)).
 std::vector<double> node_angles(const ZoneGeometry& g, int count);
+// The nodes' places in s, m + h tau_i, less cos x_ref, each to its own precision (whatever
+// the rounding of the nodes' angles).
+std::vector<double> node_offsets(const ZoneGeometry& g, int count, double x_ref);
 
 // The Chebyshev terms, in zone k's tau, that the other zones' field needs on zone k: twice
 // those to 1e-17, a power of two from 32 (ZoneFields::at_nodes); 0 for no other zone.
@@ -82,7 +86,7 @@ int smooth_field_terms(const std::vector<ZoneUnknowns>& zones, std::size_t k);
 // x[M/2]; empty: none) and the zone's own kink correction's. Formed as differences from the
 // reference node, each without cancellation (the zone's equations keep their digits where
 // the sums are large and their variation small), the constant part in G_0; C not included.
-std::vector<double> right_hand_side(const SurfaceModel& surface, const std::vector<double>& x,
+std::vector<double> right_hand_side(const SurfaceModel& surface, const ZoneGeometry& g, const std::vector<double>& x,
                                     const FieldTree::Batch& others, const KinkCorrection* kink);
 
 // An end's distance from the top, 1 - s = 2 sin^2(x/2) (upper: x^ <= pi/2), or from the
