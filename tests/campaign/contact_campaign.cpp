@@ -1,5 +1,5 @@
-// A seeded random campaign of load sweeps: surfaces of the wave curve (m in [0, 35]) with 1-4
-// roughness harmonics (even n up to --max-n, slopes H n from 0.1 to 20, H <= 0.2), each swept
+// A seeded random campaign of load sweeps: surfaces of the wave curve (m in [0, 35]) with 1 to
+// --harmonics roughness harmonics (even n up to --max-n, slopes H n from 0.1 to 20, H <= 0.2), each swept
 // by one solve_contact call over --loads loads from pa/p* = 0.01 to beyond full contact. Every
 // contact returned is checked on the whole period, independently of the solver's own
 // verification: p >= 0 on its zones and gap >= 0 off them (to 1e-7 of the largest pressure
@@ -7,7 +7,7 @@
 // stall; one whose estimate misses the tolerance is reported apart.
 //
 //   contact_campaign --seed S --sweeps N [--max-n 1024] [--loads 8] [--tolerance 1e-8]
-//                    [--first K]
+//                    [--harmonics 4] [--first K]
 // prints one line a sweep and a summary; exits 0 only with no stall and no violation.
 #include <chrono>
 #include <cmath>
@@ -26,7 +26,7 @@ constexpr double b1 = 10, H1 = 1, E = 1;
 
 struct Settings {
   unsigned seed = 1;
-  int sweeps = 10, first = 0, max_n = 1024, loads = 8;
+  int sweeps = 10, first = 0, max_n = 1024, loads = 8, harmonics = 4;
   double tolerance = 1e-8;
 };
 
@@ -44,7 +44,7 @@ Sweep draw(const Settings& s, int k) {
   w.m = unit(random) < 0.25 ? 0 : 35 * unit(random);
   // No more harmonics than there are even n up to max_n (--max-n 4 drew three of n = 2 and 4,
   // and searched for the third for ever).
-  const int count = std::min(1 + static_cast<int>(4 * unit(random)), s.max_n / 2);
+  const int count = std::min(1 + static_cast<int>(s.harmonics * unit(random)), s.max_n / 2);
   double slopes = 0;
   while (static_cast<int>(w.harmonics.size()) < count) {
     const int n = 2 * static_cast<int>(std::lround(std::exp(unit(random) * std::log(s.max_n / 2.0))));
@@ -97,6 +97,8 @@ int main(int argc, char** argv) {
       s.loads = std::stoi(value);
     else if (key == "--tolerance")
       s.tolerance = std::stod(value);
+    else if (key == "--harmonics")
+      s.harmonics = std::stoi(value);
     else {
       std::fprintf(stderr, "contact_campaign: unknown option %s\n", key.c_str());
       return 2;
@@ -104,6 +106,11 @@ int main(int argc, char** argv) {
   }
   if (s.max_n < 2 || s.loads < 2) {
     std::fprintf(stderr, "contact_campaign: --max-n %d and --loads %d must be at least 2\n", s.max_n, s.loads);
+    return 2;
+  }
+  if (s.harmonics < 1 || s.harmonics > static_cast<int>(wavecontact::max_harmonics)) {
+    std::fprintf(stderr, "contact_campaign: --harmonics %d must be from 1 to %zu\n", s.harmonics,
+                 wavecontact::max_harmonics);
     return 2;
   }
   int stalls = 0, violations = 0, missed = 0, contacts = 0, most_zones = 0;
