@@ -73,6 +73,55 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void far_fields(con
   }
 }
 
+// As far_fields, each lane's series running as its point's would alone. With sum = |z| + |w| =
+// 1/|zeta|: sum_i - sum_ref = +-dz + (z_i^2 - z_ref^2)/(|w_i| + |w_ref|), dz = (s_i - s_ref)/h;
+// zeta_i - zeta_ref = -+(sum_i - sum_ref)/(sum_i sum_ref); log|zeta_i| - log|zeta_ref| =
+// -log1p((sum_i - sum_ref)/sum_ref); and sum_j (d_j/j)(zeta_i^j - zeta_ref^j) = (zeta_i -
+// zeta_ref) sum_j (d_j/j) E_j, E_1 = 1, E_{j+1} = zeta_i E_j + zeta_ref^j. A lane stops once
+// j max(|zeta_i|, |zeta_ref|)^j falls below 1e-17.
+__attribute__((target_clones("avx512f", "avx2", "default"))) void far_field_differences(
+    const ZoneGeometry& g, const double* d, int count, const HalfAngle& reference, const HalfAngle* x,
+    const double* from_reference, std::size_t points, FieldValue* out) {
+  const Conformal r = conformal(g, reference);
+  const bool above = r.zeta > 0;  // the points beyond the zone's end at x^ = a (z > 1)
+  const double sign = above ? 1 : -1;
+  const double z_r = above ? 1 + g.z_minus_1(reference) : g.z_plus_1(reference) - 1;
+  const double sum_r = 1 / std::fabs(r.zeta), w_r = std::fabs(r.w);
+  for (std::size_t first = 0; first < points; first += lanes) {
+    const std::size_t n = std::min(lanes, points - first);
+    Lanes zeta, w, dsum, largest;
+    for (std::size_t i = 0; i < lanes; ++i) {
+      const std::size_t at = first + std::min(i, n - 1);
+      const Conformal c = conformal(g, x[at]);
+      const double z = above ? 1 + g.z_minus_1(x[at]) : g.z_plus_1(x[at]) - 1;
+      const double dz = from_reference[at] / g.h;
+      zeta[i] = c.zeta, w[i] = c.w;
+      dsum[i] = sign * dz + dz * (z + z_r) / (std::fabs(c.w) + w_r);
+      largest[i] = std::max(std::fabs(c.zeta), std::fabs(r.zeta));
+    }
+    Lanes series = {}, sum = Lanes{} + d[0], power = Lanes{} + 1.0, E = Lanes{} + 1.0, size = Lanes{} + 1.0;
+    double reference_power = 1;  // zeta_ref^(j-1)
+    LaneMask active = LaneMask{} == 0;
+    for (int j = 1; j < count; ++j) {
+      power = active ? power * zeta : power;
+      series = active ? series + (d[j] / static_cast<double>(j)) * E : series;
+      sum = active ? sum + d[j] * power : sum;
+      reference_power *= r.zeta;
+      E = active ? zeta * E + reference_power : E;
+      size = active ? size * largest : size;
+      active &= ~(static_cast<double>(j) * size < 1e-17);
+      bool any = false;
+      for (std::size_t i = 0; i < lanes; ++i) any |= active[i] != 0;
+      if (!any) break;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      const double sum_i = 1 / std::fabs(zeta[i]);
+      const double zeta_difference = -sign * dsum[i] / (sum_i * sum_r);
+      out[first + i] = {g.h * (-d[0] * std::log1p(dsum[i] / sum_r) + zeta_difference * series[i]), -sum[i] / w[i]};
+    }
+  }
+}
+
 double far_potential(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x) {
   FieldValue field;
   far_fields(g, d, count, &x, 1, &field);

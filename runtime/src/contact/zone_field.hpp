@@ -24,6 +24,11 @@ struct FieldValue {
 // below 1e-17 of the sum.
 void far_fields(const ZoneGeometry& g, const double* d, int count, const HalfAngle* x, std::size_t points,
                 FieldValue* out);
+// The same field, its potential as Psi(x_i) - Psi(reference) for points on the reference's
+// side of the zone, from the points' offsets s_i - s_ref: without the rounding of Psi itself
+// (about one ulp of each value, which a zone's coefficients j G_j / h multiply).
+void far_field_differences(const ZoneGeometry& g, const double* d, int count, const HalfAngle& reference,
+                           const HalfAngle* x, const double* from_reference, std::size_t points, FieldValue* out);
 // The potential alone, the same.
 double far_potential(const ZoneGeometry& g, const double* d, int count, const HalfAngle& x);
 
