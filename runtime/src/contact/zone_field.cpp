@@ -9,9 +9,9 @@ namespace wavecontact::detail {
 
 namespace {
 
-// zeta, log|zeta| and w = sgn(z) sqrt(z^2 - 1) at the point off the zone.
+// zeta, log|zeta|, w = sgn(z) sqrt(z^2 - 1) and z at the point off the zone.
 struct Conformal {
-  double zeta, log_zeta, w;
+  double zeta, log_zeta, w, z;
 };
 
 Conformal conformal(const ZoneGeometry& g, const HalfAngle& x) {
@@ -19,10 +19,10 @@ Conformal conformal(const ZoneGeometry& g, const HalfAngle& x) {
   const double root = std::sqrt(zm * zp);  // both of one sign off the zone
   if (zm > 0) {                            // z > 1
     const double sum = 1 + zm + root;      // z + w
-    return {1 / sum, -std::log1p(zm + root), root};
+    return {1 / sum, -std::log1p(zm + root), root, 1 + zm};
   }
   const double sum = 1 - zp + root;  // -(z + w) = |z| + |w|, |z| = 1 - zp
-  return {-1 / sum, -std::log1p(-zp + root), -root};
+  return {-1 / sum, -std::log1p(-zp + root), -root, zp - 1};
 }
 
 }  // namespace
@@ -51,7 +51,7 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void far_fields(con
     const std::size_t n = std::min(lanes, points - first);
     Lanes zeta, log_zeta, w;
     for (std::size_t i = 0; i < lanes; ++i) {
-      const Conformal c = i < n ? conformal(g, x[first + i]) : Conformal{zeta[n - 1], log_zeta[n - 1], w[n - 1]};
+      const Conformal c = i < n ? conformal(g, x[first + i]) : Conformal{zeta[n - 1], log_zeta[n - 1], w[n - 1], 0};
       zeta[i] = c.zeta, log_zeta[i] = c.log_zeta, w[i] = c.w;
     }
     Lanes series = {}, sum = Lanes{} + d[0], power = Lanes{} + 1.0;
@@ -85,7 +85,6 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void far_field_diff
   const Conformal r = conformal(g, reference);
   const bool above = r.zeta > 0;  // the points beyond the zone's end at x^ = a (z > 1)
   const double sign = above ? 1 : -1;
-  const double z_r = above ? 1 + g.z_minus_1(reference) : g.z_plus_1(reference) - 1;
   const double sum_r = 1 / std::fabs(r.zeta), w_r = std::fabs(r.w);
   for (std::size_t first = 0; first < points; first += lanes) {
     const std::size_t n = std::min(lanes, points - first);
@@ -93,10 +92,9 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void far_field_diff
     for (std::size_t i = 0; i < lanes; ++i) {
       const std::size_t at = first + std::min(i, n - 1);
       const Conformal c = conformal(g, x[at]);
-      const double z = above ? 1 + g.z_minus_1(x[at]) : g.z_plus_1(x[at]) - 1;
       const double dz = from_reference[at] / g.h;
       zeta[i] = c.zeta, w[i] = c.w;
-      dsum[i] = sign * dz + dz * (z + z_r) / (std::fabs(c.w) + w_r);
+      dsum[i] = sign * dz + dz * (c.z + r.z) / (std::fabs(c.w) + w_r);
       largest[i] = std::max(std::fabs(c.zeta), std::fabs(r.zeta));
     }
     Lanes series = {}, sum = Lanes{} + d[0], power = Lanes{} + 1.0, E = Lanes{} + 1.0, size = Lanes{} + 1.0;
