@@ -415,6 +415,19 @@ BOOST_AUTO_TEST_CASE(zones_free_of_the_nodes_rounding) {
   }
 }
 
+// A contact reported above its tolerance while the near zones' field at a zone's nodes was
+// formed as Psi(x_i) - Psi(x_ref), which rounds to an ulp of Psi itself: four scales at m = 0
+// (campaign seed 2028, sweep 4: 10 zones a period, estimate 1.8e-10 at the default tolerance
+// 1e-10). Taken as differences from the reference (far_field_differences), it meets it.
+BOOST_AUTO_TEST_CASE(near_zones_field_free_of_its_rounding) {
+  const Surface s(WavinessParams{1, 10, 0, 1},
+                  {{0.0017904036303745873, 78}, {0.2, 12}, {0.0019033631301190285, 76}, {0.00039324353151872767, 388}});
+  const double P = 6.3849418604800556;
+  const Contact c = solve_contact(s, P, SolverOptions(1e-10));
+  BOOST_TEST(c.error_estimate() <= 1e-10, "estimate " << c.error_estimate());
+  check_contact(c, 10, "seed 2028, sweep 4");
+}
+
 // A sweep whose fourth load, started from the loads before, converged on a sliver 6.6e-9 wide
 // 1.6e-8 past a zone's end (campaign seed 97, sweep 141), which the verification passed and
 // the refinement could not solve: zones so close merge, and the load is the two zones' contact.
