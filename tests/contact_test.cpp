@@ -428,6 +428,28 @@ BOOST_AUTO_TEST_CASE(near_zones_field_free_of_its_rounding) {
   check_contact(c, 10, "seed 2028, sweep 4");
 }
 
+// A gap about to close beside the top zone (campaign seed 41, sweep 10: m = 0, n = 890): at
+// this load the top zone, 2.76 wide in x^, ends 2.3e-5 in x before its neighbour, whose end
+// asks for more nodes of it than the rounding of the near zones' field let Newton's method
+// use (refused after 36 s on d2e5afd). The contact, with the gap checked at 16 points a
+// wavelength over the period and at 64 across the narrow gap itself.
+BOOST_AUTO_TEST_CASE(gap_about_to_close_beside_the_top_zone) {
+  const Surface s(WavinessParams{1, 10, 0, 1}, {{0.00039567298641233453, 890}});
+  const Contact c = solve_contact(s, 4.026525634655143, SolverOptions(1e-8));
+  BOOST_TEST(c.error_estimate() <= 1e-8, "estimate " << c.error_estimate());
+  check_contact(c, 10, "seed 41, sweep 10");
+  const auto top = std::find_if(c.zones().begin(), c.zones().end(),
+                                [](const ContactZone& z) { return z.x_start < 0 && z.x_end > 0; });
+  BOOST_TEST_REQUIRE((top != c.zones().end() && top + 1 != c.zones().end()));
+  const double gap_start = top->x_end, gap_end = (top + 1)->x_start;
+  BOOST_TEST(gap_end - gap_start > 1e-5);
+  BOOST_TEST(gap_end - gap_start < 4e-5);
+  double lowest = 0;
+  for (int i = 1; i < 64; ++i) lowest = std::min(lowest, c.gap(gap_start + (gap_end - gap_start) * i / 64));
+  for (int i = 0; i <= 16 * 890; ++i) lowest = std::min(lowest, c.gap(-10 + 20.0 * i / (16 * 890)));
+  BOOST_TEST(lowest >= -1e-9, "lowest gap " << lowest);
+}
+
 // A sweep whose fourth load, started from the loads before, converged on a sliver 6.6e-9 wide
 // 1.6e-8 past a zone's end (campaign seed 97, sweep 141), which the verification passed and
 // the refinement could not solve: zones so close merge, and the load is the two zones' contact.
