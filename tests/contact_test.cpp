@@ -432,7 +432,8 @@ BOOST_AUTO_TEST_CASE(near_zones_field_free_of_its_rounding) {
 // this load the top zone, 2.76 wide in x^, ends 2.3e-5 in x before its neighbour, whose end
 // asks for more nodes of it than the rounding of the near zones' field let Newton's method
 // use (refused after 36 s on d2e5afd). The contact, with the gap checked at 16 points a
-// wavelength over the period and at 64 across the narrow gap itself.
+// wavelength over the period and at 64 across the narrow gap itself, and the pressure beside
+// the gap against the shape an open gap this narrow must have.
 BOOST_AUTO_TEST_CASE(gap_about_to_close_beside_the_top_zone) {
   const Surface s(WavinessParams{1, 10, 0, 1}, {{0.00039567298641233453, 890}});
   const Contact c = solve_contact(s, 4.026525634655143, SolverOptions(1e-8));
@@ -448,6 +449,18 @@ BOOST_AUTO_TEST_CASE(gap_about_to_close_beside_the_top_zone) {
   for (int i = 1; i < 64; ++i) lowest = std::min(lowest, c.gap(gap_start + (gap_end - gap_start) * i / 64));
   for (int i = 0; i <= 16 * 890; ++i) lowest = std::min(lowest, c.gap(-10 + 20.0 * i / (16 * 890)));
   BOOST_TEST(lowest >= -1e-9, "lowest gap " << lowest);
+  // Beside a gap this narrow the pressure is the inner solution of a quadratic tension,
+  // (kappa/2) |xi| sqrt(xi^2 - c^2) at xi from the gap's middle (c its half-width), one
+  // curvature kappa on both sides and at every distance much below the wavelength, 0.0225.
+  const double c_half = (gap_end - gap_start) / 2, middle = (gap_start + gap_end) / 2;
+  std::vector<double> kappas;
+  for (double r : {1.1, 2.0, 6.0, 21.0}) {
+    const double xi = r * c_half, inner = 0.5 * xi * std::sqrt(xi * xi - c_half * c_half);
+    kappas.push_back(c.pressure(middle - xi) / inner);
+    kappas.push_back(c.pressure(middle + xi) / inner);
+  }
+  const auto [low, high] = std::minmax_element(kappas.begin(), kappas.end());
+  BOOST_TEST(*high - *low <= 0.01 * *low, "kappa from " << *low << " to " << *high);
 }
 
 // A sweep whose fourth load, started from the loads before, converged on a sliver 6.6e-9 wide
