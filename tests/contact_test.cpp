@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <thread>
 #include <vector>
@@ -622,6 +623,10 @@ BOOST_AUTO_TEST_CASE(a_spent_budget_names_the_lowest_residual) {
     const std::string message = e.what();
     BOOST_TEST(message.find("the work budget of 0.05 s (max_seconds) is spent") != std::string::npos, message);
     BOOST_TEST(message.find("the lowest scaled residual Newton's method reached: ") != std::string::npos, message);
+    // The load named so that it reads back as the load asked for (not 0.942478).
+    const std::size_t at = message.find("solving at P = ");
+    BOOST_TEST_REQUIRE(at != std::string::npos, message);
+    BOOST_TEST(std::strtod(message.c_str() + at + 15, nullptr) == 0.3 * pi, message);
   }
 }
 

@@ -12,6 +12,7 @@
 #include "constants.hpp"
 #include "cosine_transform.hpp"
 #include "grid_seed.hpp"
+#include "support/validate.hpp"
 #include "trace.hpp"
 #include "verification.hpp"
 #include "wavecontact/errors.hpp"
@@ -91,9 +92,8 @@ void ContactSolver::check_budget(double residual) const {
   if (residual < lowest_residual_) lowest_residual_ = residual;  // NaN compares false
   budget_.check([&] {
     char text[96];
-    std::snprintf(text, sizeof text, "solving at P = %.6g, the last attempt from ", target_load_);
-    std::string where =
-        text + std::to_string(zones_tried_) + (zones_tried_ == 1 ? " zone" : " zones") + " in half a period";
+    std::string where = "solving at P = " + format(target_load_) + ", the last attempt from " +
+                        std::to_string(zones_tried_) + (zones_tried_ == 1 ? " zone" : " zones") + " in half a period";
     if (std::isfinite(lowest_residual_)) {
       std::snprintf(text, sizeof text, "; the lowest scaled residual Newton's method reached: %.3g", lowest_residual_);
       where += text;
@@ -191,7 +191,7 @@ LoadContact ContactSolver::settle_at(double P, const LoadContact* previous, cons
           attempt("a finer grid's contact", grid_seed(*surface_, P, 2 * cells, working_nodes), {most_changes})) {
     return {P, std::move(*c)};
   }
-  throw BeyondReach("wavecontact::solve_contact: no contact found at P = " + std::to_string(P) + " (" + failures + ")");
+  throw BeyondReach("wavecontact::solve_contact: no contact found at P = " + format(P) + " (" + failures + ")");
 }
 
 std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads) const {

@@ -12,6 +12,7 @@
 #include "kink_correction.hpp"
 #include "trace.hpp"
 #include "support/parallel.hpp"
+#include "support/validate.hpp"
 #include "verification.hpp"
 #include "wavecontact/errors.hpp"
 #include "zone_field.hpp"
@@ -94,8 +95,10 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     for (int attempt = 0;; ++attempt) {
       const ZoneSystem::Result r = system.newton(start, residual, checkpoint);
       if (r.outcome != ZoneSystem::Outcome::converged && !(r.residual < 1e-9)) {
+        char residual_text[32];
+        std::snprintf(residual_text, sizeof residual_text, "%.3g", r.residual);
         throw BeyondReach("wavecontact::solve_contact: Newton's method did not converge refining the contact at P = " +
-                          std::to_string(P) + " (residual " + std::to_string(r.residual) + ")");
+                          format(P) + " (residual " + residual_text + ")");
       }
       if (system.windows_fit(r.configuration) || attempt == 2) return r.configuration;
       start = r.configuration;  // a kink window chosen again
@@ -181,12 +184,10 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   // an end whose place is as uncertain).
   const double allowed = std::max(gap_tolerance, 10 * std::max(error, rounding)) * range;
   if (!v.pressure_ok || v.lowest_gap < -allowed) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "wavecontact::solve_contact: the refined contact at P = %.6g is not admissible (lowest pressure "
-                  "%.3g, lowest gap %.3g)",
-                  P, v.lowest_pressure, v.lowest_gap);
-    return {std::nullopt, std::move(c), text};
+    char text[80];
+    std::snprintf(text, sizeof text, " is not admissible (lowest pressure %.3g, lowest gap %.3g)", v.lowest_pressure,
+                  v.lowest_gap);
+    return {std::nullopt, std::move(c), "wavecontact::solve_contact: the refined contact at P = " + format(P) + text};
   }
   return {SolvedContact{std::move(current), P, std::max(error, rounding), rounding, nodes}, {}, {}};
 }
