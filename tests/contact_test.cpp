@@ -230,6 +230,20 @@ void check_contact(const Contact& c, double b1, const std::string& what) {
   }
 }
 
+// The contact at P solved to `tolerance`, its estimate within it, and a contact (check_contact).
+Contact checked_contact(const Surface& s, double P, double tolerance, const std::string& what) {
+  const Contact c = solve_contact(s, P, SolverOptions(tolerance));
+  BOOST_TEST(c.error_estimate() <= tolerance, what << ": estimate " << c.error_estimate());
+  check_contact(c, s.b1(), what);
+  return c;
+}
+
+// The zone around x = 0.
+std::vector<ContactZone>::const_iterator top_zone(const Contact& c) {
+  return std::find_if(c.zones().begin(), c.zones().end(),
+                      [](const ContactZone& z) { return z.x_start < 0 && z.x_end > 0; });
+}
+
 BOOST_AUTO_TEST_CASE(multi_zone_contacts_are_contacts) {
   const Contact snap = solve_contact(Surface(WavinessParams{1, 10, 10, 1}), 1.9 * pi);
   BOOST_TEST(snap.zones_per_period() == 2);  // the top and the valley
@@ -322,9 +336,7 @@ BOOST_AUTO_TEST_CASE(sweep_whose_zone_end_crosses_the_kink_meets_its_tolerance) 
 BOOST_AUTO_TEST_CASE(tension_at_a_zone_end_beside_the_kink) {
   const Surface s(WavinessParams{1, 10, 19.972024073372339, 1},
                   {{0.036209306919737727, 22}, {0.021903903268075349, 14}, {0.2, 2}});
-  const Contact c = solve_contact(s, 21.138486, SolverOptions(1e-8));
-  BOOST_TEST(c.error_estimate() <= 1e-8);
-  check_contact(c, 10, "m = 20 at P = 21.138486");
+  checked_contact(s, 21.138486, 1e-8, "m = 20 at P = 21.138486");
 }
 
 // A zone across the kink (m = 5.10, one roughness n = 24, H2 = 0.2, P = 3.1645: campaign
@@ -379,15 +391,12 @@ BOOST_AUTO_TEST_CASE(narrow_kink_window_next_to_an_end) {
        99.518463115087101},
   };
   for (const Case& k : cases) {
-    const Contact c = solve_contact(Surface(WavinessParams{1, 10, k.m, 1}, k.roughness), k.P, SolverOptions(1e-8));
     const std::string what = "m = " + std::to_string(k.m) + " at P = " + std::to_string(k.P);
-    const auto top = std::find_if(c.zones().begin(), c.zones().end(),
-                                  [](const ContactZone& z) { return z.x_start < 0 && z.x_end > 0; });
+    const Contact c = checked_contact(Surface(WavinessParams{1, 10, k.m, 1}, k.roughness), k.P, 1e-8, what);
+    const auto top = top_zone(c);
     BOOST_TEST_REQUIRE((top != c.zones().end()), what);
     BOOST_TEST(top->x_end > 5.0, what);
     BOOST_TEST(top->x_end < 5.0 + 1e-3, what);
-    BOOST_TEST(c.error_estimate() <= 1e-8, what << ": estimate " << c.error_estimate());
-    check_contact(c, 10, what);
   }
 }
 
@@ -408,11 +417,8 @@ BOOST_AUTO_TEST_CASE(zones_free_of_the_nodes_rounding) {
       {2.0974198729848226, {{0.00065730587796289993, 396}}, 0.13184521952141448, 1e-8},
   };
   for (const Case& k : cases) {
-    const Contact c =
-        solve_contact(Surface(WavinessParams{1, 10, k.m, 1}, k.roughness), k.P, SolverOptions(k.tolerance));
-    const std::string what = "m = " + std::to_string(k.m) + " at P = " + std::to_string(k.P);
-    BOOST_TEST(c.error_estimate() <= k.tolerance, what << ": estimate " << c.error_estimate());
-    check_contact(c, 10, what);
+    checked_contact(Surface(WavinessParams{1, 10, k.m, 1}, k.roughness), k.P, k.tolerance,
+                    "m = " + std::to_string(k.m) + " at P = " + std::to_string(k.P));
   }
 }
 
@@ -423,10 +429,7 @@ BOOST_AUTO_TEST_CASE(zones_free_of_the_nodes_rounding) {
 BOOST_AUTO_TEST_CASE(near_zones_field_free_of_its_rounding) {
   const Surface s(WavinessParams{1, 10, 0, 1},
                   {{0.0017904036303745873, 78}, {0.2, 12}, {0.0019033631301190285, 76}, {0.00039324353151872767, 388}});
-  const double P = 6.3849418604800556;
-  const Contact c = solve_contact(s, P, SolverOptions(1e-10));
-  BOOST_TEST(c.error_estimate() <= 1e-10, "estimate " << c.error_estimate());
-  check_contact(c, 10, "seed 2028, sweep 4");
+  checked_contact(s, 6.3849418604800556, 1e-10, "seed 2028, sweep 4");
 }
 
 // A gap about to close beside the top zone (campaign seed 41, sweep 10: m = 0, n = 890): at
@@ -437,11 +440,8 @@ BOOST_AUTO_TEST_CASE(near_zones_field_free_of_its_rounding) {
 // the gap against the shape an open gap this narrow must have.
 BOOST_AUTO_TEST_CASE(gap_about_to_close_beside_the_top_zone) {
   const Surface s(WavinessParams{1, 10, 0, 1}, {{0.00039567298641233453, 890}});
-  const Contact c = solve_contact(s, 4.026525634655143, SolverOptions(1e-8));
-  BOOST_TEST(c.error_estimate() <= 1e-8, "estimate " << c.error_estimate());
-  check_contact(c, 10, "seed 41, sweep 10");
-  const auto top = std::find_if(c.zones().begin(), c.zones().end(),
-                                [](const ContactZone& z) { return z.x_start < 0 && z.x_end > 0; });
+  const Contact c = checked_contact(s, 4.026525634655143, 1e-8, "seed 41, sweep 10");
+  const auto top = top_zone(c);
   BOOST_TEST_REQUIRE((top != c.zones().end() && top + 1 != c.zones().end()));
   const double gap_start = top->x_end, gap_end = (top + 1)->x_start;
   BOOST_TEST(gap_end - gap_start > 1e-5);
@@ -488,10 +488,7 @@ BOOST_AUTO_TEST_CASE(sliver_beside_an_end_merges) {
 BOOST_AUTO_TEST_CASE(returning_tension_cut_by_its_parabola) {
   const Surface s(WavinessParams{1, 10, 19.97025457220591, 1},
                   {{0.2, 4}, {0.012119397139581038, 342}, {0.026921222462061082, 240}, {0.2, 2}});
-  const double P = 0.58795757652502878;
-  const Contact c = solve_contact(s, P, SolverOptions(1e-8));
-  BOOST_TEST(c.error_estimate() <= 1e-8, "estimate " << c.error_estimate());
-  check_contact(c, 10, "seed 100, sweep 153");
+  checked_contact(s, 0.58795757652502878, 1e-8, "seed 100, sweep 153");
 }
 
 BOOST_AUTO_TEST_CASE(sweep_equals_single_solves) {
