@@ -8,14 +8,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run_command.hpp"
 
 namespace fs = std::filesystem;
 using wavecontact::test::CommandResult;
+using wavecontact::test::fields;
+using wavecontact::test::lines;
 using wavecontact::test::run_command;
 
 namespace {
@@ -24,23 +26,8 @@ const std::string B = "--H1 1 --b1 10 --m 2 --E 1";
 
 CommandResult run(const std::string& arguments, const wavecontact::test::CommandOptions& options = {}) {
   std::vector<std::string> argv{WAVECONTACT_CLI};
-  std::istringstream in(arguments);
-  for (std::string word; in >> word;) argv.push_back(word);
+  for (std::string& word : wavecontact::test::words(arguments)) argv.push_back(std::move(word));
   return run_command(argv, options);
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
-
-std::vector<double> fields(const std::string& line) {
-  std::vector<double> values;
-  std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) values.push_back(std::stod(field));
-  return values;
 }
 
 // The failure contract: the status, one line on stderr with `part` in it, nothing on stdout.

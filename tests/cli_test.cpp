@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run_command.hpp"
@@ -19,27 +19,13 @@ namespace tt = boost::test_tools;
 namespace {
 
 using Result = wavecontact::test::CommandResult;
+using wavecontact::test::fields;
+using wavecontact::test::lines;
 
-// The command line split at spaces (no argument here has one).
 Result run(const std::string& arguments) {
   std::vector<std::string> argv{WAVECONTACT_CLI};
-  std::istringstream in(arguments);
-  for (std::string word; in >> word;) argv.push_back(word);
+  for (std::string& word : wavecontact::test::words(arguments)) argv.push_back(std::move(word));
   return wavecontact::test::run_command(argv);
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
-
-std::vector<double> fields(const std::string& line) {
-  std::vector<double> values;
-  std::istringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) values.push_back(std::stod(field));
-  return values;
 }
 
 std::string number(double value) {

@@ -75,4 +75,28 @@ inline CommandResult run_command(const std::vector<std::string>& argv, const Com
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, options.stdout_path.empty() ? slurp(out) : "", slurp(err), seconds};
 }
 
+// A command line's words: split at spaces (the tests' arguments hold none).
+inline std::vector<std::string> words(const std::string& command) {
+  std::vector<std::string> result;
+  std::istringstream in(command);
+  for (std::string word; in >> word;) result.push_back(word);
+  return result;
+}
+
+// A program's output, line by line.
+inline std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+// The numbers of a CSV row.
+inline std::vector<double> fields(const std::string& line) {
+  std::vector<double> values;
+  std::istringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) values.push_back(std::stod(field));
+  return values;
+}
+
 }  // namespace wavecontact::test
