@@ -70,6 +70,12 @@ def duration(seconds):
 
 # ---- the console report -------------------------------------------------------------------
 
+def seconds_cell(seconds):
+    """A figure in seconds, 12 wide; `not run` where the run left its benchmark out (the smoke
+    mode filters the slow ones)."""
+    return f"{seconds:12.4g}" if seconds is not None else f"{'not run':>12}"
+
+
 def print_report(r, python_ns):
     rows = [("waviness pressure, ns/point", r.ns_per_item, "BM_waviness_pressure_generated/1000000",
              [("plain kernel, same path", "BM_waviness_pressure_plain_same_isa/1000000"),
@@ -111,7 +117,7 @@ def print_report(r, python_ns):
     for k in (8, 16, 32, 64, 128, 256):
         for label, shape in (("H cos(k x)", "harmonic"), ("H cos(x)^k", "power")):
             now, whole = r.seconds(f"BM_derive_profile_{shape}/{k}"), r.seconds(f"BM_derive_whole_{shape}/{k}")
-            row = f"{'derive ' + label + ', k = ' + str(k) + ', s':40} {now if now else float('nan'):12.4g}"
+            row = f"{'derive ' + label + ', k = ' + str(k) + ', s':40} {seconds_cell(now)}"
             if whole is not None and now is not None:
                 row += f" {'whole, partial fractions':>24} {whole:12.4g} {whole / now:7.1f}x"
             print(row)
@@ -139,8 +145,7 @@ def print_report(r, python_ns):
                         ("contact, two scales n = 6, 64 at P = 5.3, s", "BM_contact_two_scales_6_64"),
                         ("contact, 200 loads, two-scale n = 8, s", "BM_contact_curve_200/1"),
                         ("contact, 200 loads, m = 10 to full, s", "BM_contact_curve_200/0")):
-        value = r.seconds(name)
-        print(f"{label:40} {value if value is not None else float('nan'):12.4g}")
+        print(f"{label:40} {seconds_cell(r.seconds(name))}")
 
 
 # ---- the docs' tables ---------------------------------------------------------------------

@@ -134,3 +134,16 @@ def test_near_limit_table_compares_each_path_with_its_own_plain_kernel(tmp_path,
     assert "| one point, WavinessZone, a = 0.75 b1 | 900 ns |  |  |  | ≤ 200 ns (missed) |" in text
     assert "| Python: one point, wavecontact.pressure | 250 ns |  |  |  | ≤ 300 ns (met) |" in text
     assert "| Python: ten points, wavecontact.pressure | 1.2 µs |  |  |  | ≤ 1 µs (missed) |" in text
+
+
+def test_console_report_says_which_figures_the_run_left_out(tmp_path, source_dir):
+    results = tmp_path / "results.json"
+    write_run(results, [benchmark("BM_contact_curve_200/1/real_time", 0.485)])
+    script = os.path.join(source_dir, "scripts", "bench_report.py")
+    r = subprocess.run([sys.executable, script, str(results)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    rows = {line[:40].rstrip(): line[40:].strip() for line in r.stdout.splitlines()}
+    assert rows["contact, 200 loads, two-scale n = 8, s"] == "0.485"
+    assert rows["contact, 200 loads, m = 10 to full, s"] == "not run"
+    assert rows["derive H cos(k x), k = 8, s"] == "not run"
+    assert "nan" not in r.stdout
