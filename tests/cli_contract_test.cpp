@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "run_command.hpp"
@@ -25,9 +24,7 @@ namespace {
 const std::string B = "--H1 1 --b1 10 --m 2 --E 1";
 
 CommandResult run(const std::string& arguments, const wavecontact::test::CommandOptions& options = {}) {
-  std::vector<std::string> argv{WAVECONTACT_CLI};
-  for (std::string& word : wavecontact::test::words(arguments)) argv.push_back(std::move(word));
-  return run_command(argv, options);
+  return run_command(wavecontact::test::command_line(WAVECONTACT_CLI, arguments), options);
 }
 
 // The failure contract: the status, one line on stderr with `part` in it, nothing on stdout.

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "run_command.hpp"
@@ -23,9 +22,7 @@ using wavecontact::test::fields;
 using wavecontact::test::lines;
 
 Result run(const std::string& arguments) {
-  std::vector<std::string> argv{WAVECONTACT_CLI};
-  for (std::string& word : wavecontact::test::words(arguments)) argv.push_back(std::move(word));
-  return wavecontact::test::run_command(argv);
+  return wavecontact::test::run_command(wavecontact::test::command_line(WAVECONTACT_CLI, arguments));
 }
 
 std::string number(double value) {

@@ -75,12 +75,13 @@ inline CommandResult run_command(const std::vector<std::string>& argv, const Com
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, options.stdout_path.empty() ? slurp(out) : "", slurp(err), seconds};
 }
 
-// A command line's words: split at spaces (the tests' arguments hold none).
-inline std::vector<std::string> words(const std::string& command) {
-  std::vector<std::string> result;
-  std::istringstream in(command);
-  for (std::string word; in >> word;) result.push_back(word);
-  return result;
+// The argument vector of `program` with `arguments` split at spaces (the tests' arguments hold
+// none).
+inline std::vector<std::string> command_line(const std::string& program, const std::string& arguments) {
+  std::vector<std::string> argv{program};
+  std::istringstream in(arguments);
+  for (std::string word; in >> word;) argv.push_back(word);
+  return argv;
 }
 
 // A program's output, line by line.
