@@ -1,6 +1,6 @@
 // Contacts that once failed: loads that the campaigns (tests/campaign) or an issue found
 // refused, above their tolerance or penetrating. Each case's comment says how it failed and
-// what mended it; docs/contact.md has the campaigns behind them. contact_test.cpp holds the
+// what mended it; docs/campaigns.md has the campaigns behind them. contact_test.cpp holds the
 // solver's general behaviour.
 #define BOOST_TEST_MODULE contact_regression
 #include <boost/test/unit_test.hpp>

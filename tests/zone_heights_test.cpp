@@ -86,7 +86,7 @@ Noise noise(const Case& c) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(heights_at_the_nodes_carry_no_noise_of_the_angles) {
-  // Each zone from a contact reported above its tolerance for that noise (docs/contact.md).
+  // Each zone from a contact reported above its tolerance for that noise (docs/campaigns.md).
   // The bounds: a fifteenth of the angles' noise beside the kink (1.5e-16 there; the
   // offsets give 3.2e-18), well below it at the tip (3.5e-18; the offsets 2e-23), and 1e-18
   // on a top zone, where the angles are exact to 3e-19 already and offsets taken from m and
