@@ -189,6 +189,22 @@ BOOST_AUTO_TEST_CASE(plot_draws_a_column_over_two_axes) {
   BOOST_TEST(fs::exists(out.parent_path() / "plotted-zones.gp"));
 }
 
+// The load axis answers to its column's name too: a rerun that only draws, with --y
+// pa_over_pstar, writes the table that --y pa-over-pstar wrote.
+BOOST_AUTO_TEST_CASE(plot_takes_the_load_axis_by_its_column_name) {
+  const fs::path out = scratch("plotted_by_column.csv"), table = out.parent_path() / "plotted_by_column-zones.csv";
+  const std::string names[2] = {"pa-over-pstar", "pa_over_pstar"};
+  std::string drawn[2];
+  for (int k = 0; k < 2; ++k) {
+    const CommandResult r = run(with_profile({"--m", "0,4", "--H2", "0.02", "--n", "8", "--pa-over-pstar", "0.1,0.3",
+                                              "--out", out.string(), "--plot", "zones", "--x", "m", "--y", names[k]}));
+    BOOST_TEST_REQUIRE(r.status == 0, names[k] << ": " << r.err);
+    for (const std::string& line : lines_of(table)) drawn[k] += line + "\n";
+  }
+  BOOST_TEST(!drawn[0].empty());
+  BOOST_TEST(drawn[0] == drawn[1]);
+}
+
 BOOST_AUTO_TEST_CASE(bad_plots_are_refused_before_any_work) {
   const fs::path out = scratch("refused_plot.csv");
   const std::vector<std::string> grid{"--m", "0,1", "--H2", "0.02", "--n", "8,16", "--pa-over-pstar", "0.1,0.2"};

@@ -59,6 +59,10 @@ void MapPlotArguments::add_to(CLI::App* app) {
                                         "error_estimate) with gnuplot, beside --out");
   auto* x_option = app->add_option("--x", x, "the heat map's horizontal axis (m, H2, n, harmonics, pa-over-pstar, P)");
   auto* y_option = app->add_option("--y", y, "its vertical axis");
+  // The load axis answers to its option's name and to its column's, pa_over_pstar.
+  for (CLI::Option* axis : {x_option, y_option}) {
+    axis->transform([](std::string name) { return name == "pa_over_pstar" ? std::string("pa-over-pstar") : name; });
+  }
   column_option->needs(x_option, y_option);
   x_option->needs(column_option);
   y_option->needs(column_option);
