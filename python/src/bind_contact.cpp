@@ -16,7 +16,10 @@ void bind_contact(py::module_& m) {
            }),
            "H"_a, "n"_a)
       .def_readonly("H", &Harmonic::H)
-      .def_readonly("n", &Harmonic::n);
+      .def_readonly("n", &Harmonic::n)
+      .def("__repr__", [](const Harmonic& h) {
+        return repr_of_fields("Harmonic", {{"H", repr_of(h.H)}, {"n", repr_of(h.n)}});
+      });
 
   py::class_<Surface>(m, "Surface", "An even surface of period 2 b1 for solve_contact().")
       .def(py::init<const WavinessParams&, const std::vector<Harmonic>&>(), "waviness"_a,
@@ -39,9 +42,11 @@ void bind_contact(py::module_& m) {
       .def_readonly("max_pressure", &ContactZone::max_pressure)
       .def_readonly("x_of_max_pressure", &ContactZone::x_of_max_pressure)
       .def("__repr__", [](const ContactZone& z) {
-        return "ContactZone(x_start=" + std::string(py::repr(py::float_(z.x_start))) +
-               ", x_end=" + std::string(py::repr(py::float_(z.x_end))) +
-               ", load=" + std::string(py::repr(py::float_(z.load))) + ")";
+        return repr_of_fields("ContactZone", {{"x_start", repr_of(z.x_start)},
+                                              {"x_end", repr_of(z.x_end)},
+                                              {"load", repr_of(z.load)},
+                                              {"max_pressure", repr_of(z.max_pressure)},
+                                              {"x_of_max_pressure", repr_of(z.x_of_max_pressure)}});
       });
 
   py::class_<Contact>(m, "Contact", "The contact at one load: zones, pressure, gap, error estimate.")
@@ -57,6 +62,15 @@ void bind_contact(py::module_& m) {
       .def_property_readonly("rounding_error", &Contact::rounding_error,
                              "the part of error_estimate that rounding alone makes")
       .def_property_readonly("nodes_per_zone", &Contact::nodes_per_zone, "the most Chebyshev nodes of a zone")
+      .def("__repr__",
+           [](const Contact& c) {
+             return repr_of_fields("Contact", {{"load", repr_of(c.load())},
+                                               {"zones_per_period", repr_of(c.zones_per_period())},
+                                               {"full_contact", repr_of(c.full_contact())},
+                                               {"contact_fraction", repr_of(c.contact_fraction())},
+                                               {"max_pressure", repr_of(c.max_pressure())},
+                                               {"error_estimate", repr_of(c.error_estimate())}});
+           })
       .def(
           "pressure",
           [](const Contact& c, const py::handle& x) {
@@ -118,7 +132,15 @@ void bind_contact(py::module_& m) {
       .def_readonly("lowest_gap", &SingleZoneCheck::lowest_gap)
       .def_readonly("x_of_lowest_gap", &SingleZoneCheck::x_of_lowest_gap)
       .def_readonly("lowest_pressure", &SingleZoneCheck::lowest_pressure)
-      .def_readonly("x_of_lowest_pressure", &SingleZoneCheck::x_of_lowest_pressure);
+      .def_readonly("x_of_lowest_pressure", &SingleZoneCheck::x_of_lowest_pressure)
+      .def("__repr__", [](const SingleZoneCheck& r) {
+        return repr_of_fields("SingleZoneCheck", {{"solution", repr_of(r.solution)},
+                                                  {"penetrates", repr_of(r.penetrates)},
+                                                  {"lowest_gap", repr_of(r.lowest_gap)},
+                                                  {"x_of_lowest_gap", repr_of(r.x_of_lowest_gap)},
+                                                  {"lowest_pressure", repr_of(r.lowest_pressure)},
+                                                  {"x_of_lowest_pressure", repr_of(r.x_of_lowest_pressure)}});
+      });
   m.def("single_zone_check", &single_zone_check, "surface"_a, "a"_a,
         "Whether the single zone of half-width a (eq. 12's pressure) is the contact: p >= 0 on it, gap >= 0 off it.");
 }

@@ -56,7 +56,13 @@ void bind_profile(py::module_& m) {
       .def_readonly("m", &PressureUniformity::m, "shape parameter")
       .def_readonly("a_over_b1", &PressureUniformity::a_over_b1, "contact half-width / b1")
       .def_readonly("max_over_mean", &PressureUniformity::max_over_mean, "max p / mean p over the zone, >= 1")
-      .def_readonly("x_of_max_over_a", &PressureUniformity::x_of_max_over_a, "where the maximum is, x/a");
+      .def_readonly("x_of_max_over_a", &PressureUniformity::x_of_max_over_a, "where the maximum is, x/a")
+      .def("__repr__", [](const PressureUniformity& u) {
+        return repr_of_fields("PressureUniformity", {{"m", repr_of(u.m)},
+                                                     {"a_over_b1", repr_of(u.a_over_b1)},
+                                                     {"max_over_mean", repr_of(u.max_over_mean)},
+                                                     {"x_of_max_over_a", repr_of(u.x_of_max_over_a)}});
+      });
   m.def("pressure_uniformity", &pressure_uniformity, "m"_a, "pa_over_pstar"_a,
         "max p / mean p for the shape m at pa/p*.");
   m.def("most_uniform_shape", &most_uniform_shape, "pa_over_pstar"_a, "m_max"_a = 100.0,

@@ -17,14 +17,21 @@ void bind_two_scale(py::module_& m) {
            }),
            "H2"_a, "n"_a, "Height H2 >= 0 [length] and wavelength ratio n = b1/b2, even, 2..4096.")
       .def_readonly("H2", &RoughnessParams::H2, "height of the roughness [length]")
-      .def_readonly("n", &RoughnessParams::n, "wavelength ratio b1/b2");
+      .def_readonly("n", &RoughnessParams::n, "wavelength ratio b1/b2")
+      .def("__repr__", [](const RoughnessParams& r) {
+        return repr_of_fields("RoughnessParams", {{"H2", repr_of(r.H2)}, {"n", repr_of(r.n)}});
+      });
   py::class_<TwoScaleParams>(m, "TwoScaleParams", "The two-scale profile of eq. 1: waviness plus roughness.")
       .def(py::init([](const WavinessParams& w, const RoughnessParams& r) {
              return TwoScaleParams{w, r};
            }),
            "waviness"_a, "roughness"_a)
       .def_readonly("waviness", &TwoScaleParams::waviness)
-      .def_readonly("roughness", &TwoScaleParams::roughness);
+      .def_readonly("roughness", &TwoScaleParams::roughness)
+      .def("__repr__", [](const TwoScaleParams& t) {
+        return repr_of_fields("TwoScaleParams", {{"waviness", py::repr(py::cast(t.waviness))},
+                                                 {"roughness", py::repr(py::cast(t.roughness))}});
+      });
 
   py::class_<TwoScaleContact>(m, "TwoScaleContact",
                               "One zone of half-width a of the two-scale profile (eq. 21 with the exact "

@@ -14,9 +14,8 @@ namespace wavecontact::python {
 namespace {
 
 std::string repr(const WavinessParams& p) {
-  return "WavinessParams(H1=" + std::string(py::repr(py::float_(p.H1))) +
-         ", b1=" + std::string(py::repr(py::float_(p.b1))) + ", m=" + std::string(py::repr(py::float_(p.m))) +
-         ", E=" + std::string(py::repr(py::float_(p.E))) + ")";
+  return repr_of_fields("WavinessParams",
+                        {{"H1", repr_of(p.H1)}, {"b1", repr_of(p.b1)}, {"m", repr_of(p.m)}, {"E", repr_of(p.E)}});
 }
 
 }  // namespace
@@ -106,7 +105,7 @@ void bind_waviness(py::module_& m) {
       .def_property_readonly("form", &WavinessZone::form, "the closed form evaluated")
       .def_property_readonly("tables", &WavinessZone::atom_tables, "how it takes the atoms beyond b1/2")
       .def("__repr__", [](const WavinessZone& z) {
-        return "WavinessZone(" + repr(z.params()) + ", a=" + std::string(py::repr(py::float_(z.half_width()))) +
+        return "WavinessZone(" + repr(z.params()) + ", a=" + repr_of(z.half_width()) +
                ", form=" + (z.form() == Form::exact ? "Form.exact" : "Form.paper") +
                ", tables=" + (z.atom_tables() == AtomTables::kept ? "AtomTables.kept" : "AtomTables.per_call") + ")";
       });
@@ -132,20 +131,30 @@ void bind_waviness(py::module_& m) {
       .def_readonly("most_negative_x", &Admissibility::most_negative_x, "where p is lowest (0 if p >= 0)")
       .def_readonly("most_negative_pressure", &Admissibility::most_negative_pressure, "that p if < 0, else 0")
       .def_readonly("lowest_gap", &Admissibility::lowest_gap, "the lowest gap off the zone [length]")
-      .def_readonly("x_of_lowest_gap", &Admissibility::x_of_lowest_gap, "where, x >= 0");
+      .def_readonly("x_of_lowest_gap", &Admissibility::x_of_lowest_gap, "where, x >= 0")
+      .def("__repr__", [](const Admissibility& r) {
+        return repr_of_fields("Admissibility", {{"admissible", repr_of(r.admissible)},
+                                                {"most_negative_x", repr_of(r.most_negative_x)},
+                                                {"most_negative_pressure", repr_of(r.most_negative_pressure)},
+                                                {"lowest_gap", repr_of(r.lowest_gap)},
+                                                {"x_of_lowest_gap", repr_of(r.x_of_lowest_gap)}});
+      });
   m.def("admissibility", py::overload_cast<const WavinessParams&, double>(&admissibility), "params"_a, "a"_a,
         "Whether the single zone of half-width a, 0 < a < b1, of the wave curve is the contact.");
 
   py::class_<HalfWidthRange>(m, "HalfWidthRange", "A range of half-widths [begin, end).")
       .def_readonly("begin", &HalfWidthRange::begin)
-      .def_readonly("end", &HalfWidthRange::end);
+      .def_readonly("end", &HalfWidthRange::end)
+      .def("__repr__", [](const HalfWidthRange& r) {
+        return repr_of_fields("HalfWidthRange", {{"begin", repr_of(r.begin)}, {"end", repr_of(r.end)}});
+      });
   py::class_<Equilibrium>(m, "Equilibrium", "A half-width carrying a load, its stability and admissibility.")
       .def_readonly("a", &Equilibrium::a, "contact half-width [length]")
       .def_readonly("stable", &Equilibrium::stable, "dP/da > 0")
       .def_readonly("admissible", &Equilibrium::admissible, "p >= 0 in the zone and gap >= 0 off it")
       .def("__repr__", [](const Equilibrium& e) {
-        return "Equilibrium(a=" + std::string(py::repr(py::float_(e.a))) + ", stable=" + (e.stable ? "True" : "False") +
-               ", admissible=" + (e.admissible ? "True" : "False") + ")";
+        return repr_of_fields(
+            "Equilibrium", {{"a", repr_of(e.a)}, {"stable", repr_of(e.stable)}, {"admissible", repr_of(e.admissible)}});
       });
   py::class_<LoadCurve>(m, "LoadCurve",
                         "The single-zone load P(a) over 0 < a <= b1 with its turning points, located "

@@ -2,7 +2,9 @@
 // the scalar-or-array convention of every evaluator that takes x.
 #pragma once
 
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 #include <Eigen/Core>
 #include <pybind11/numpy.h>
@@ -17,6 +19,17 @@ void bind_two_scale(py::module_& m);
 void bind_profile(py::module_& m);
 void bind_contact(py::module_& m);
 void bind_map(py::module_& m);
+
+// Python's repr of a field, for the reprs of the module's value types.
+inline std::string repr_of(double x) { return py::repr(py::float_(x)); }
+inline std::string repr_of(int n) { return std::to_string(n); }
+inline std::string repr_of(bool b) { return b ? "True" : "False"; }
+// "Type(name=value, ...)", the fields' values already repr_of's.
+inline std::string repr_of_fields(const char* type, std::initializer_list<std::pair<const char*, std::string>> fields) {
+  std::string text = std::string(type) + "(";
+  for (const auto& [name, value] : fields) text += (text.back() == '(' ? "" : ", ") + std::string(name) + "=" + value;
+  return text + ")";
+}
 
 // x as a C-contiguous float64 array: the caller's own memory when it already is one (no
 // copy), otherwise converted once. Whatever is not real numbers (None, strings, complex

@@ -69,3 +69,39 @@ def test_profile_full_contact():
     c = math.pi * 2.5 / 10
     expected = 0.4 / 20 + math.pi / 10 * (math.cos(c) + 0.3 * math.cos(3 * c))
     assert profile.full_contact_pressure(0.4, 2.5) == pytest.approx(expected, rel=1e-14)
+
+
+def fields_repr(obj, fields):
+    return type(obj).__name__ + "(" + ", ".join(f"{f}={getattr(obj, f)!r}" for f in fields) + ")"
+
+
+def test_value_types_read_back_from_their_reprs():
+    w = wc.WavinessParams(H1=1, b1=10, m=0.2, E=3.5)
+    for value in (w, wc.Harmonic(H=0.15, n=8), wc.RoughnessParams(H2=0.01, n=64),
+                  wc.TwoScaleParams(w, wc.RoughnessParams(H2=0.01, n=64))):
+        again = eval(repr(value), vars(wc))
+        assert repr(again) == repr(value)
+    assert repr(wc.Harmonic(H=0.1, n=4)) == "Harmonic(H=0.1, n=4)"
+
+
+def test_results_show_their_fields():
+    w = wc.WavinessParams(H1=1, b1=10, m=10, E=1)
+    rough = wc.Surface(w, [wc.Harmonic(H=0.15, n=8)])
+    contact = wc.solve_contact(rough, 0.3 * math.pi)
+    assert repr(contact) == fields_repr(contact, ["load", "zones_per_period", "full_contact", "contact_fraction",
+                                                  "max_pressure", "error_estimate"])
+    zone = contact.zones[0]
+    assert repr(zone) == fields_repr(zone, ["x_start", "x_end", "load", "max_pressure", "x_of_max_pressure"])
+    check = wc.single_zone_check(rough, 2.0)
+    assert repr(check) == fields_repr(check, ["solution", "penetrates", "lowest_gap", "x_of_lowest_gap",
+                                              "lowest_pressure", "x_of_lowest_pressure"])
+    admissible = wc.admissibility(w, 4.0)
+    assert repr(admissible) == fields_repr(admissible, ["admissible", "most_negative_x", "most_negative_pressure",
+                                                        "lowest_gap", "x_of_lowest_gap"])
+    curve = wc.LoadCurve(w)
+    unstable = curve.unstable_ranges[0]
+    assert repr(unstable) == fields_repr(unstable, ["begin", "end"])
+    equilibrium = curve.equilibria(4.0)[0]
+    assert repr(equilibrium) == fields_repr(equilibrium, ["a", "stable", "admissible"])
+    shape = wc.most_uniform_shape(0.3)
+    assert repr(shape) == fields_repr(shape, ["m", "a_over_b1", "max_over_mean", "x_of_max_over_a"])
