@@ -19,6 +19,9 @@ struct ZoneUnknowns {
 struct Configuration {
   std::vector<ZoneUnknowns> zones;  // in increasing x^, disjoint
   double C = 0;
+  // Where a zone holds a narrow gap (narrow_gap.hpp): near each, its pressure's negative
+  // minimum is the gap's (x^). Carried through Newton's method; one outside every zone is idle.
+  std::vector<double> narrow_gaps;
 };
 
 }  // namespace wavecontact::detail

@@ -31,6 +31,16 @@ ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Co
     pressure_series_.push_back(bounded_pressure_series(z.geometry, z.d.data(), static_cast<int>(z.d.size())));
     longest_series_ = std::max(longest_series_, pressure_series_.back().size());
   }
+  // Each narrow gap from the merged pressure, its derivatives by differences of a thousandth
+  // of the resolution (their truncation about 1e-6 of the curvature).
+  narrow_.resize(zone_count());
+  for (double x : configuration_.narrow_gaps) {
+    const std::size_t k = zone_at(x);
+    if (k == zone_count()) continue;
+    const std::optional<NarrowGap> g =
+        narrow_gap([&](double t) { return merged_pressure(k, t); }, x, 1e-3 * surface_->resolution);
+    if (g && g->centre - g->half > zone(k).a && g->centre + g->half < zone(k).b) narrow_[k].push_back(*g);
+  }
 }
 
 bool ContactSolution::full_contact() const { return zone_count() == 1 && zone(0).top() && zone(0).valley(); }
@@ -77,12 +87,28 @@ void ContactSolution::pressures_here(const double* xs, double* ps, std::size_t c
       zone_pressures(g, pressure_series_[k], run, ps + i, end - i);
       for (std::size_t j = i; j < end; ++j) {
         const double x = run[j - i];
-        const bool free_end = (x == g.a && !g.top()) || (x == g.b && !g.valley());
-        ps[j] = free_end ? 0.0 : ps[j] + kink_pressure(k, x);
+        if ((x == g.a && !g.top()) || (x == g.b && !g.valley())) {
+          ps[j] = 0;  // a free end
+          continue;
+        }
+        ps[j] += kink_pressure(k, x);
+        for (const NarrowGap& gap : narrow_[k]) {
+          if (gap.inside(x)) {
+            ps[j] = 0;
+            break;
+          }
+          ps[j] += gap.correction(x);
+        }
       }
     }
     i = end;
   }
+}
+
+double ContactSolution::merged_pressure(std::size_t k, double x) const {
+  double p = 0;
+  zone_pressures(zone(k), pressure_series_[k], &x, &p, 1);
+  return p + kink_pressure(k, x);
 }
 
 double ContactSolution::kink_pressure(std::size_t k, double x) const {
@@ -91,9 +117,16 @@ double ContactSolution::kink_pressure(std::size_t k, double x) const {
 
 double ContactSolution::potential(double x) const { return fields_.potential(x, zone_count()); }
 
+double ContactSolution::gap_in_zone(std::size_t k, double x) const {
+  for (const NarrowGap& g : narrow_[k]) {
+    if (g.inside(x)) return g.gap(x, surface_->E);
+  }
+  return 0;
+}
+
 double ContactSolution::gap(double x) const {
   x = std::fabs(x);
-  if (zone_at(x) != zone_count()) return 0;
+  if (const std::size_t k = zone_at(x); k != zone_count()) return gap_in_zone(k, x);
   return gap_of(potential(x) - configuration_.C, surface_->depth(x));
 }
 
@@ -102,8 +135,9 @@ void ContactSolution::gaps(const double* xs, double* gs, std::size_t count) cons
   std::vector<std::size_t> at;
   for (std::size_t i = 0; i < count; ++i) {
     const double x = std::fabs(xs[i]);
-    gs[i] = 0;
-    if (zone_at(x) == zone_count()) off.push_back(x), at.push_back(i);
+    const std::size_t k = zone_at(x);
+    gs[i] = k == zone_count() ? 0.0 : gap_in_zone(k, x);
+    if (k == zone_count()) off.push_back(x), at.push_back(i);
   }
   if (off.empty()) return;
   const FieldTree::Batch field = fields_.evaluate(zone_count(), off, off[off.size() / 2], false);

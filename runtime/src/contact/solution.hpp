@@ -6,6 +6,7 @@
 #include <mutex>
 #include <vector>
 
+#include "narrow_gap.hpp"
 #include "surface_model.hpp"
 #include "zone_system.hpp"
 
@@ -24,6 +25,9 @@ class ContactSolution {
   const ZoneGeometry& zone(std::size_t k) const { return configuration_.zones[k].geometry; }
   bool full_contact() const;
 
+  // The narrow gaps inside zone k (Configuration::narrow_gaps): its pressure is 0 in each, and
+  // the gap is the inner solution's.
+  const std::vector<NarrowGap>& narrow_gaps(std::size_t k) const { return narrow_[k]; }
   // The zone holding x^ in [0, pi] (its ends included), or zone_count().
   std::size_t zone_at(double x) const;
   // p^ at x^ (any sign: |x^| <= pi), 0 off the zones.
@@ -63,6 +67,10 @@ class ContactSolution {
  private:
   // pressures() on the calling thread.
   void pressures_here(const double* xs, double* ps, std::size_t count) const;
+  // Zone k's pressure at x^ without its narrow gaps.
+  double merged_pressure(std::size_t k, double x) const;
+  // The gap at x^ in zone k: its narrow gap's, or 0.
+  double gap_in_zone(std::size_t k, double x) const;
   // The gap (2/E*)(Psi - C) - depth from Psi - C and the depth y(x^) - y_top at one point.
   double gap_of(double potential_less_C, double depth) const { return 2 / surface_->E * potential_less_C - depth; }
 
@@ -72,6 +80,7 @@ class ContactSolution {
   std::vector<double> ends_;                          // a_0, b_0, a_1, ...: for zone_at
   std::vector<std::vector<double>> pressure_series_;  // of each zone: bounded_pressure_series
   std::size_t longest_series_ = 0;
+  std::vector<std::vector<NarrowGap>> narrow_;  // of each zone
   // Of each zone and span (at 2 k + span), once sampled_ at the same place has run.
   mutable std::vector<PressureSamples> samples_;
   std::unique_ptr<std::once_flag[]> sampled_;

@@ -118,6 +118,7 @@ SystemLayout ZoneSystem::layout(const Configuration& c, bool ends_fixed) const {
   }
   L.C_at = at;
   L.size = at + 1;
+  L.narrow_gaps = c.narrow_gaps;
   L.C_scale = std::max(std::fabs(c.C), largest_row);
   return L;
 }
@@ -149,6 +150,7 @@ Configuration ZoneSystem::unpack(const std::vector<double>& X, const SystemLayou
     c.zones.push_back(std::move(z));
   }
   c.C = X[L.C_at] * L.C_scale;
+  c.narrow_gaps = L.narrow_gaps;
   return c;
 }
 

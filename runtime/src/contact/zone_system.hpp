@@ -43,6 +43,7 @@ struct SystemLayout {
     int block() const { return free_ends + count; }
   };
   std::vector<Zone> zones;
+  std::vector<double> narrow_gaps;  // carried through (Configuration)
   std::size_t C_at = 0, size = 0;
   double C_scale = 1;
 };
