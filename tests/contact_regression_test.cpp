@@ -218,6 +218,41 @@ BOOST_AUTO_TEST_CASE(gap_about_to_close_beside_the_top_zone) {
   BOOST_TEST(*high - *low <= 0.01 * *low, "kappa from " << *low << " to " << *high);
 }
 
+// The same gap in the last 2e-6 of load before it closes, where the top zone's nodes no
+// longer resolve its neighbour's end and every load was refused: now a narrow gap of the
+// zones merged (narrow_gap.hpp). The first and the last load of that window solve, and the
+// gap narrows like the root of the load still to go (the inner solution's half-width is
+// 2 sqrt(T / kappa), and the merged contact's tension T falls linearly to 0): the closing
+// that the two widths put it at lies between the last load refused before and the first
+// with the gap closed (106 zones).
+BOOST_AUTO_TEST_CASE(narrow_gap_in_the_last_loads_before_it_closes) {
+  const Surface s(WavinessParams{1, 10, 0, 1}, {{0.00039567298641233453, 890}});
+  const double first = 4.0265268, last = 4.0265284, closed = 4.0265285;
+  std::vector<double> squared_widths, fractions;
+  for (double P : {first, last}) {
+    const Contact c = checked_contact(s, P, 1e-8, "seed 41, sweep 10, P = " + std::to_string(P));
+    BOOST_TEST(c.zones_per_period() == 108);
+    const auto top = top_zone(c);
+    BOOST_TEST_REQUIRE((top != c.zones().end() && top + 1 != c.zones().end()));
+    const double gap_start = top->x_end, gap_end = (top + 1)->x_start;
+    BOOST_TEST_REQUIRE(gap_end > gap_start);
+    for (int i = 1; i < 64; ++i) {
+      const double gap = c.gap(gap_start + (gap_end - gap_start) * i / 64);
+      BOOST_TEST(gap > 0, "P = " << P << ": gap " << gap);
+    }
+    squared_widths.push_back((gap_end - gap_start) * (gap_end - gap_start));
+    fractions.push_back(c.contact_fraction());
+  }
+  const double closing =
+      (squared_widths[0] * last - squared_widths[1] * first) / (squared_widths[0] - squared_widths[1]);
+  BOOST_TEST(closing > last);
+  BOOST_TEST(closing <= closed);
+  const Contact c = solve_contact(s, closed, SolverOptions(1e-8));
+  BOOST_TEST(c.zones_per_period() == 106);
+  BOOST_TEST(fractions[0] < fractions[1]);
+  BOOST_TEST(fractions[1] < c.contact_fraction());
+}
+
 // A sweep whose fourth load, started from the loads before, converged on a sliver 6.6e-9 wide
 // 1.6e-8 past a zone's end (campaign seed 97, sweep 141), which the verification passed and
 // the refinement could not solve: zones so close merge, and the load is the two zones' contact.

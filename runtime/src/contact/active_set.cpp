@@ -232,6 +232,32 @@ void cut_zones(Configuration& c, const std::vector<Tension>& tensions, double re
   }
 }
 
+// Whether a tension is a narrow gap's (SettleLimits::narrow_gaps): its width,
+// 4 sqrt(-p / p''), below a hundredth of the resolution, its room to the zone's free ends a
+// hundred widths, and none marked there before (one that still shows a tension is cut).
+bool narrow_gap_tension(const Configuration& c, const Tension& t, double resolution) {
+  if (!(t.curvature > 0)) return false;
+  const double half = 2 * std::sqrt(-t.pressure / t.curvature);
+  const ZoneGeometry& g = c.zones[t.zone].geometry;
+  const double room = std::min(g.top() ? pi : t.x - g.a, g.valley() ? pi : g.b - t.x);
+  const bool before = std::any_of(c.narrow_gaps.begin(), c.narrow_gaps.end(),
+                                  [&](double x) { return std::fabs(x - t.x) < 100 * half; });
+  return half <= 0.01 * resolution && room >= 200 * half && !before;
+}
+
+// The tensions that are narrow gaps' leave `tensions` and mark them; whether any did.
+bool mark_narrow_gaps(Configuration& c, std::vector<Tension>& tensions, double resolution) {
+  const auto marked = [&](const Tension& t) {
+    if (!narrow_gap_tension(c, t, resolution)) return false;
+    if (tracing()) std::fprintf(stderr, "wavecontact trace:   the tension at %.9g is a narrow gap\n", t.x);
+    c.narrow_gaps.push_back(t.x);
+    return true;
+  };
+  const std::size_t count = tensions.size();
+  tensions.erase(std::remove_if(tensions.begin(), tensions.end(), marked), tensions.end());
+  return tensions.size() < count;
+}
+
 std::vector<ZoneGeometry> geometries(const Configuration& c) {
   std::vector<ZoneGeometry> g;
   for (const ZoneUnknowns& z : c.zones) g.push_back(z.geometry);
@@ -262,6 +288,7 @@ bool same_zones(const Configuration& a, const Configuration& b) {
 
 Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before) {
   Configuration c = last.contact;
+  c.narrow_gaps.clear();  // each load finds its own
   // Two contacts of the same zones and nodes: each end, coefficient and C linear in the load,
   // trusted up to twice the step between them; ends that would leave the half period or
   // cross keep the last contact as it is.
@@ -342,6 +369,8 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   std::vector<ZoneGeometry> start = geometries(c);
   bool grown_after_converging = false;
   std::vector<double> cut_places;  // where tensions were cut, for cut_zones
+  bool met_narrow_gap = false;     // a tension that narrow_gaps would have marked
+  const auto fail = [&](std::string why) { return SettleOutcome{std::nullopt, std::move(why), met_narrow_gap}; };
   for (int change = 0; change <= limits.changes; ++change) {
     if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
     fit_nodes(c, surface);
@@ -362,11 +391,11 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         char text[120];
         std::snprintf(text, sizeof text, "Newton's method did not converge on %zu zones (residual %.3g)",
                       c.zones.size(), r.residual);
-        return {std::nullopt, text};
+        return fail(text);
       }
       if (grown_after_converging) restore_ends(c, start);
     } else if (r.outcome == ZoneSystem::Outcome::stretch_closes) {
-      if (!close_stretch(c, r.stretch)) return {std::nullopt, "every zone vanished"};
+      if (!close_stretch(c, r.stretch)) return fail("every zone vanished");
       zones_changed = true;
     } else if (merge_close_zones(c, surface.resolution)) {
       zones_changed = true;
@@ -404,17 +433,23 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         if (!grow_nodes(c, surface, working_tail)) return {std::move(c), {}};
         grown_after_converging = true;
       } else {
-        cut_zones(c, v.tensions, surface.resolution, cut_places);
-        for (const Tension& t : v.tensions) cut_places.push_back(t.x);
-        if (v.tensions.empty()) open_zones(c, v.penetrations, surface.resolution);
-        if (c.zones.empty()) return {std::nullopt, "every zone was cut away"};
+        std::vector<Tension> cut = v.tensions;
+        met_narrow_gap = met_narrow_gap || std::any_of(cut.begin(), cut.end(), [&](const Tension& t) {
+                           return narrow_gap_tension(c, t, surface.resolution);
+                         });
+        if (limits.narrow_gaps && mark_narrow_gaps(c, cut, surface.resolution) && cut.empty() && v.penetrations.empty())
+          continue;  // verified again with its narrow gaps
+        cut_zones(c, cut, surface.resolution, cut_places);
+        for (const Tension& t : cut) cut_places.push_back(t.x);
+        if (cut.empty()) open_zones(c, v.penetrations, surface.resolution);
+        if (c.zones.empty()) return fail("every zone was cut away");
         zones_changed = true;
       }
     }
     consistent(c);
     if (zones_changed) start = geometries(c), grown_after_converging = false;
   }
-  return {std::nullopt, "the zones still changed after " + std::to_string(limits.changes) + " changes"};
+  return fail("the zones still changed after " + std::to_string(limits.changes) + " changes");
 }
 
 }  // namespace wavecontact::detail

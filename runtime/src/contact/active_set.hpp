@@ -59,7 +59,8 @@ double coefficient_tail(const std::vector<double>& d);
 
 struct SettleOutcome {
   std::optional<Configuration> contact;
-  std::string failure;  // why not, when there is none
+  std::string failure;          // why not, when there is none
+  bool met_narrow_gap = false;  // a tension on the way that SettleLimits::narrow_gaps would mark
 };
 
 // How far settle goes: at most `changes` changes of zones. A shortcut, a guess with a surer
@@ -67,9 +68,13 @@ struct SettleOutcome {
 // nodes: on a dense multi-scale sweep (campaign seed 11, sweep 82 with 60 loads) a failing
 // start from the previous load's contact grew nodes for 10 s at one load, nearly as long as
 // the whole sweep takes from the grid's seed at every load (11.3 s).
+// With narrow_gaps, a tension whose inner solution is a gap far narrower than the resolution
+// and than its room in the zone becomes a narrow gap of it (narrow_gap.hpp) instead of a cut;
+// the solver asks for that only where settling without has failed.
 struct SettleLimits {
   int changes = 0;
   bool shortcut = false;
+  bool narrow_gaps = false;
 };
 
 // The contact under the load P from `guess` (its coefficients need not solve anything),

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/math/tools/minima.hpp>
 
 #include "contact/constants.hpp"
@@ -33,23 +34,54 @@ void require_options(const char* function, const SolverOptions& options) {
   }
 }
 
-// The largest pressure on zone k (x^): every local maximum of its Chebyshev-spread sampling,
-// refined by Brent's method between its neighbours.
-std::pair<double, double> largest_pressure(const detail::ContactSolution& s, std::size_t k) {
+// The largest pressure on [lo, hi] of zone k (x^): every local maximum of the zone's
+// Chebyshev-spread sampling there, refined by Brent's method between its neighbours.
+std::pair<double, double> largest_pressure(const detail::ContactSolution& s, std::size_t k, double lo, double hi) {
   const auto& [xs, ps] = s.sampled_pressure(k);
-  const double lo = s.zone(k).a, hi = s.zone(k).b;
-  const int count = static_cast<int>(xs.size()) - 1;
+  const std::size_t first = static_cast<std::size_t>(std::lower_bound(xs.begin(), xs.end(), lo) - xs.begin());
+  const std::size_t last = static_cast<std::size_t>(std::upper_bound(xs.begin(), xs.end(), hi) - xs.begin());
+  if (first == last) return {s.pressure((lo + hi) / 2), (lo + hi) / 2};  // a piece between samples
   std::pair<double, double> best{-std::numeric_limits<double>::infinity(), lo};
-  for (int i = 0; i <= count; ++i) {
-    const std::size_t u = static_cast<std::size_t>(i);
-    if ((i > 0 && ps[u] < ps[u - 1]) || (i < count && ps[u] < ps[u + 1])) continue;
+  for (std::size_t u = first; u < last; ++u) {
+    if ((u > first && ps[u] < ps[u - 1]) || (u + 1 < last && ps[u] < ps[u + 1])) continue;
     if (ps[u] > best.first) best = {ps[u], xs[u]};
-    const double a = i > 0 ? xs[u - 1] : lo, b = i < count ? xs[u + 1] : hi;
+    const double a = u > first ? xs[u - 1] : lo, b = u + 1 < last ? xs[u + 1] : hi;
     if (!(b > a)) continue;
     const auto [x, minus_p] = boost::math::tools::brent_find_minima([&](double t) { return -s.pressure(t); }, a, b, 52);
     if (-minus_p > best.first) best = {-minus_p, x};
   }
   return best;
+}
+
+// The pieces of zone k that its narrow gaps leave (x^), with their loads (its own part of
+// [0, pi]): each but the longest integrated (tanh-sinh, which takes the root at each end),
+// the longest the zone's load less theirs (the gaps' corrections carry none).
+struct ZonePiece {
+  double a, b, load;
+};
+std::vector<ZonePiece> zone_pieces(const detail::ContactSolution& s, std::size_t k) {
+  const detail::ZoneGeometry& z = s.zone(k);
+  std::vector<ZonePiece> pieces;
+  double lo = z.a;
+  std::vector<detail::NarrowGap> gaps = s.narrow_gaps(k);
+  std::sort(gaps.begin(), gaps.end(), [](const auto& l, const auto& r) { return l.centre < r.centre; });
+  for (const detail::NarrowGap& g : gaps) pieces.push_back({lo, g.centre - g.half, 0}), lo = g.centre + g.half;
+  pieces.push_back({lo, z.b, 0});
+  if (pieces.size() == 1) {
+    pieces[0].load = s.zone_load(k);
+    return pieces;
+  }
+  const auto longest = std::max_element(pieces.begin(), pieces.end(),
+                                        [](const ZonePiece& l, const ZonePiece& r) { return l.b - l.a < r.b - r.a; });
+  double rest = s.zone_load(k);
+  boost::math::quadrature::tanh_sinh<double> integrator;
+  for (auto piece = pieces.begin(); piece != pieces.end(); ++piece) {
+    if (piece == longest) continue;
+    piece->load = integrator.integrate([&](double x) { return s.pressure(x); }, piece->a, piece->b, 1e-13);
+    rest -= piece->load;
+  }
+  longest->load = rest;
+  return pieces;
 }
 
 }  // namespace
@@ -99,22 +131,23 @@ std::vector<Contact> solve_contact(const Surface& surface, const std::vector<dou
     c.b1_ = b1, c.P_ = s.P, c.error_estimate_ = s.error_estimate, c.rounding_ = s.rounding, c.nodes_ = s.nodes;
     c.full_ = solution.full_contact();
     for (std::size_t k = 0; k < solution.zone_count(); ++k) {
-      const detail::ZoneGeometry& z = solution.zone(k);
-      const double half = solution.zone_load(k);
-      const auto [p_max, x_max] = largest_pressure(solution, k);
-      const ContactZone right{z.a * to_x, z.b * to_x, half, p_max * to_p, x_max * to_x};
-      c.fraction_ += (z.b - z.a) / pi;
-      if (p_max * to_p > c.max_pressure_) c.max_pressure_ = p_max * to_p, c.x_of_max_ = x_max * to_x;
-      if (z.top() && z.valley()) {
-        c.zones_.push_back({-b1, b1, s.P, right.max_pressure, right.x_of_max_pressure});
-      } else if (z.top()) {
-        c.zones_.push_back({-right.x_end, right.x_end, 2 * half, right.max_pressure, right.x_of_max_pressure});
-      } else if (z.valley()) {
-        c.zones_.push_back(
-            {right.x_start, 2 * b1 - right.x_start, 2 * half, right.max_pressure, right.x_of_max_pressure});
-      } else {
-        c.zones_.push_back({-right.x_end, -right.x_start, half, right.max_pressure, -right.x_of_max_pressure});
-        c.zones_.push_back(right);
+      for (const ZonePiece& piece : zone_pieces(solution, k)) {
+        const auto [p_max, x_max] = largest_pressure(solution, k, piece.a, piece.b);
+        const ContactZone right{piece.a * to_x, piece.b * to_x, piece.load, p_max * to_p, x_max * to_x};
+        c.fraction_ += (piece.b - piece.a) / pi;
+        if (p_max * to_p > c.max_pressure_) c.max_pressure_ = p_max * to_p, c.x_of_max_ = x_max * to_x;
+        const bool top = piece.a == 0, valley = piece.b == pi;
+        if (top && valley) {
+          c.zones_.push_back({-b1, b1, s.P, right.max_pressure, right.x_of_max_pressure});
+        } else if (top) {
+          c.zones_.push_back({-right.x_end, right.x_end, 2 * piece.load, right.max_pressure, right.x_of_max_pressure});
+        } else if (valley) {
+          c.zones_.push_back(
+              {right.x_start, 2 * b1 - right.x_start, 2 * piece.load, right.max_pressure, right.x_of_max_pressure});
+        } else {
+          c.zones_.push_back({-right.x_end, -right.x_start, piece.load, right.max_pressure, -right.x_of_max_pressure});
+          c.zones_.push_back(right);
+        }
       }
     }
     std::sort(c.zones_.begin(), c.zones_.end(),

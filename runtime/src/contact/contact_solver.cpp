@@ -161,11 +161,13 @@ std::optional<Configuration> ContactSolver::single_zone(double P) const {
 
 LoadContact ContactSolver::settle_at(double P, const LoadContact* previous, const LoadContact* before) const {
   std::string failures;
+  bool met_narrow_gap = false;
   const auto attempt = [&](const char* from, Configuration guess, SettleLimits limits) -> std::optional<Configuration> {
     zones_tried_ = guess.zones.size();
     trace_configuration(from, P, guess, "a guess");
     SettleOutcome s = settle(surface_, P, std::move(guess), limits, [&](double residual) { check_budget(residual); });
     if (!s.contact) failures += std::string(failures.empty() ? "" : "; ") + "from " + from + ": " + s.failure;
+    met_narrow_gap = met_narrow_gap || s.met_narrow_gap;
     return std::move(s.contact);
   };
   // In a sweep of small steps the previous loads' contacts, extrapolated, are nearly this
@@ -182,14 +184,22 @@ LoadContact ContactSolver::settle_at(double P, const LoadContact* previous, cons
     }
   }
   if (std::optional<Configuration> c = single_zone(P)) return {P, std::move(*c)};
+  // From the grid's seed, then a finer grid's. Where an attempt failed after meeting a tension
+  // whose gap would be far narrower than the resolution (a gap about to close beside a long
+  // zone, too narrow for its nodes as two zones), the same seed again with such gaps held as
+  // the inner solutions of the merged zone's tension (narrow_gap.hpp).
   const int cells = seed_cells(*surface_);
-  if (std::optional<Configuration> c =
-          attempt("the grid's contact", grid_seed(*surface_, P, cells, working_nodes), {most_changes})) {
-    return {P, std::move(*c)};
-  }
-  if (std::optional<Configuration> c =
-          attempt("a finer grid's contact", grid_seed(*surface_, P, 2 * cells, working_nodes), {most_changes})) {
-    return {P, std::move(*c)};
+  bool narrow_tried = false;
+  for (const auto& [from, refined] : {std::pair{"the grid's contact", 1}, std::pair{"a finer grid's contact", 2}}) {
+    Configuration seed = grid_seed(*surface_, P, refined * cells, working_nodes);
+    if (std::optional<Configuration> c = attempt(from, seed, {most_changes})) return {P, std::move(*c)};
+    if (met_narrow_gap && !narrow_tried) {
+      narrow_tried = true;
+      if (std::optional<Configuration> c =
+              attempt("the same with narrow gaps", std::move(seed), {most_changes, false, true})) {
+        return {P, std::move(*c)};
+      }
+    }
   }
   throw BeyondReach("wavecontact::solve_contact: no contact found at P = " + format(P) + " (" + failures + ")");
 }
@@ -225,7 +235,8 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
         break;
       }
       if (again == most_resettles) throw BeyondReach(r.refusal);
-      SettleOutcome s = settle(surface_, P, std::move(r.refused), {most_changes}, checkpoint);
+      const bool narrow = !r.refused.narrow_gaps.empty();
+      SettleOutcome s = settle(surface_, P, std::move(r.refused), {most_changes, false, narrow}, checkpoint);
       if (!s.contact) throw BeyondReach(r.refusal + "; settled again from it: " + s.failure);
       settled = {P, std::move(*s.contact)};
     }

@@ -29,12 +29,23 @@ constexpr double least_window_nodes = 32;
 // the pressure at the points that sample a's extrema (to the largest pressure), short of a
 // hundredth of the zone from a free end (there the pressure goes like the root of the
 // distance to the end, whose own difference is the first term): a's own samples of
-// Span::inside, which the rounding's estimate takes again.
+// Span::inside, which the rounding's estimate takes again. A narrow gap's ends count as the
+// zones'; one that only a holds or only b, by its width.
 std::vector<double> zone_differences(const ContactSolution& a, const ContactSolution& b, double highest) {
   std::vector<double> difference(a.zone_count());
   for_each_index(a.zone_count(), zones_for_threads, [&](std::size_t k) {
     const ZoneGeometry& g = a.zone(k);
     double worst = std::max(std::fabs(g.a - b.zone(k).a), std::fabs(g.b - b.zone(k).b)) / pi;
+    const std::vector<NarrowGap>&narrow_a = a.narrow_gaps(k), &narrow_b = b.narrow_gaps(k);
+    if (narrow_a.size() == narrow_b.size()) {
+      for (std::size_t i = 0; i < narrow_a.size(); ++i) {
+        const double centre = std::fabs(narrow_a[i].centre - narrow_b[i].centre);
+        worst = std::max(worst, (centre + std::fabs(narrow_a[i].half - narrow_b[i].half)) / pi);
+      }
+    } else {
+      for (const NarrowGap& n : narrow_a.size() > narrow_b.size() ? narrow_a : narrow_b)
+        worst = std::max(worst, 2 * n.half / pi);
+    }
     const auto& [xs, pa] = a.sampled_pressure(k, ContactSolution::Span::inside);
     std::vector<double> pb(xs.size());
     b.pressures(xs.data(), pb.data(), xs.size());
@@ -171,8 +182,16 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     current = std::move(refined);
   }
   const Verification v = verify(*current, gap_tolerance * range, pressure_tolerance);
-  const double error =
+  double error =
       std::max(capped_change, difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end()));
+  // A narrow gap's inner solution errs by its own neglected terms, whatever the nodes.
+  for (std::size_t k = 0; k < current->zone_count(); ++k) {
+    const ZoneGeometry& g = current->zone(k);
+    for (const NarrowGap& n : current->narrow_gaps(k)) {
+      const double room = std::min(g.top() ? pi : n.centre - g.a, g.valley() ? pi : g.b - n.centre);
+      error = std::max(error, n.error(room) / highest);
+    }
+  }
   int nodes = 0;
   for (const ZoneUnknowns& z : c.zones) nodes = std::max(nodes, static_cast<int>(z.d.size()));
   // Rounding moves the solution of the equations, whatever their nodes once they resolve it:

@@ -185,6 +185,24 @@ Verification verify(const ContactSolution& s, double gap_tolerance, double press
       if (value < 0) v.tensions.push_back({k, x, value, 0.0});
     }
   }
+  // A narrow gap's edges, where its pressure rises like a root over a width far below the
+  // zone's samples, probed at geometric distances from each; and its gap inside.
+  for (std::size_t k = 0; k < zones; ++k) {
+    for (const NarrowGap& g : s.narrow_gaps(k)) {
+      for (double side : {-1.0, 1.0}) {
+        for (int j = -10; j <= 30; ++j) {
+          const double x = g.centre + side * g.half * (1 + std::ldexp(1.0, -j)), value = s.pressure(x);
+          if (value < v.lowest_pressure) v.lowest_pressure = value, v.x_of_lowest_pressure = x;
+          if (value < 0) v.tensions.push_back({k, x, value, 0.0});
+        }
+      }
+      for (int i = 1; i < 32; ++i) {
+        const double x = g.centre - g.half * std::cos(pi * i / 32), value = s.gap(x);
+        if (value < v.lowest_gap) v.lowest_gap = value, v.x_of_lowest_gap = x;
+        if (value < -gap_tolerance) v.penetrations.push_back({x, value, 0.0, g.centre - g.half, g.centre + g.half});
+      }
+    }
+  }
   const double allowed = -pressure_tolerance * v.highest_pressure;
   v.tensions.erase(
       std::remove_if(v.tensions.begin(), v.tensions.end(), [&](const Tension& t) { return !(t.pressure < allowed); }),
