@@ -57,7 +57,8 @@ BOOST_AUTO_TEST_CASE(inner_solution_of_a_cubic_minimum) {
   for (double side : {-1.0, 1.0}) {
     const double edge = g.centre + side * g.half, x = g.centre + side * g.half * (1 + 1e-6);
     const double Q = g.A * g.half * g.half + side * g.B * g.half + g.D;
-    BOOST_TEST(cubic(x) + g.correction(x) == std::fabs(Q) * g.half * std::sqrt(2e-6), boost::test_tools::tolerance(1e-3));
+    BOOST_TEST(cubic(x) + g.correction(x) == std::fabs(Q) * g.half * std::sqrt(2e-6),
+               boost::test_tools::tolerance(1e-3));
     BOOST_TEST(std::fabs(g.gap(edge, 1.0)) < 1e-14 * g.gap(g.centre, 1.0), "gap at the edge " << g.gap(edge, 1.0));
   }
   for (int i = 1; i < 100; ++i) {
@@ -131,6 +132,7 @@ BOOST_AUTO_TEST_CASE(merged_contact_with_a_narrow_gap_against_the_two_zones) {
   BOOST_TEST(away < 1e-10 * largest, "away from the gap " << away);
   for (double r : {-0.5, 0.0, 0.5}) {
     const double x = g.centre + r * g.half;
-    BOOST_TEST(std::fabs(one.gap(x) - two.gap(x * to_x)) < 1e-14, "gap " << one.gap(x) << " against " << two.gap(x * to_x));
+    BOOST_TEST(std::fabs(one.gap(x) - two.gap(x * to_x)) < 1e-14,
+               "gap " << one.gap(x) << " against " << two.gap(x * to_x));
   }
 }
