@@ -63,7 +63,6 @@ std::optional<NarrowGap> narrow_gap(const std::function<double(double)>& p, doub
     g.B = g.kappa / 2 + g.lambda * sigma / 2;
     c = std::sqrt(2 * (g.T - g.kappa * sigma * sigma / 2 - g.lambda * sigma * sigma * sigma / 6) / g.B);
   }
-  g.B = g.kappa / 2 + g.lambda * sigma / 2;
   g.D = -g.A * c * c / 4;
   g.centre = x + sigma, g.half = c;
   if (!(g.half > 0 && g.B > 0)) return std::nullopt;
