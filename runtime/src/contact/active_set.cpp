@@ -369,7 +369,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
   std::vector<ZoneGeometry> start = geometries(c);
   bool grown_after_converging = false;
   std::vector<double> cut_places;  // where tensions were cut, for cut_zones
-  bool met_narrow_gap = false;     // a tension that narrow_gaps would have marked
+  bool met_narrow_gap = false;     // without narrow_gaps, a tension that they would have marked
   const auto fail = [&](std::string why) { return SettleOutcome{std::nullopt, std::move(why), met_narrow_gap}; };
   for (int change = 0; change <= limits.changes; ++change) {
     if (checkpoint) checkpoint(std::numeric_limits<double>::quiet_NaN());
@@ -434,11 +434,13 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         grown_after_converging = true;
       } else {
         std::vector<Tension> cut = v.tensions;
-        met_narrow_gap = met_narrow_gap || std::any_of(cut.begin(), cut.end(), [&](const Tension& t) {
-                           return narrow_gap_tension(c, t, surface.resolution);
-                         });
-        if (limits.narrow_gaps && mark_narrow_gaps(c, cut, surface.resolution) && cut.empty() && v.penetrations.empty())
-          continue;  // verified again with its narrow gaps
+        if (limits.narrow_gaps) {
+          if (mark_narrow_gaps(c, cut, surface.resolution) && cut.empty() && v.penetrations.empty())
+            continue;  // verified again with its narrow gaps
+        } else if (!met_narrow_gap) {
+          met_narrow_gap = std::any_of(cut.begin(), cut.end(),
+                                       [&](const Tension& t) { return narrow_gap_tension(c, t, surface.resolution); });
+        }
         cut_zones(c, cut, surface.resolution, cut_places);
         for (const Tension& t : cut) cut_places.push_back(t.x);
         if (cut.empty()) open_zones(c, v.penetrations, surface.resolution);

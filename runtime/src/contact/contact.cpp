@@ -63,9 +63,8 @@ std::vector<ZonePiece> zone_pieces(const detail::ContactSolution& s, std::size_t
   const detail::ZoneGeometry& z = s.zone(k);
   std::vector<ZonePiece> pieces;
   double lo = z.a;
-  std::vector<detail::NarrowGap> gaps = s.narrow_gaps(k);
-  std::sort(gaps.begin(), gaps.end(), [](const auto& l, const auto& r) { return l.centre < r.centre; });
-  for (const detail::NarrowGap& g : gaps) pieces.push_back({lo, g.centre - g.half, 0}), lo = g.centre + g.half;
+  for (const detail::NarrowGap& g : s.narrow_gaps(k))
+    pieces.push_back({lo, g.centre - g.half, 0}), lo = g.centre + g.half;
   pieces.push_back({lo, z.b, 0});
   if (pieces.size() == 1) {
     pieces[0].load = s.zone_load(k);

@@ -41,6 +41,9 @@ ContactSolution::ContactSolution(std::shared_ptr<const SurfaceModel> surface, Co
         narrow_gap([&](double t) { return merged_pressure(k, t); }, x, 1e-3 * surface_->resolution);
     if (g && g->centre - g->half > zone(k).a && g->centre + g->half < zone(k).b) narrow_[k].push_back(*g);
   }
+  for (std::vector<NarrowGap>& gaps : narrow_) {
+    std::sort(gaps.begin(), gaps.end(), [](const NarrowGap& l, const NarrowGap& r) { return l.centre < r.centre; });
+  }
 }
 
 bool ContactSolution::full_contact() const { return zone_count() == 1 && zone(0).top() && zone(0).valley(); }

@@ -25,8 +25,8 @@ class ContactSolution {
   const ZoneGeometry& zone(std::size_t k) const { return configuration_.zones[k].geometry; }
   bool full_contact() const;
 
-  // The narrow gaps inside zone k (Configuration::narrow_gaps): its pressure is 0 in each, and
-  // the gap is the inner solution's.
+  // The narrow gaps inside zone k (Configuration::narrow_gaps), in increasing x^: its pressure
+  // is 0 in each, and the gap is the inner solution's.
   const std::vector<NarrowGap>& narrow_gaps(std::size_t k) const { return narrow_[k]; }
   // The zone holding x^ in [0, pi] (its ends included), or zone_count().
   std::size_t zone_at(double x) const;
