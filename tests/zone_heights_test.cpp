@@ -1,11 +1,13 @@
 // The heights at a zone's Chebyshev nodes as the zone's equations take them
-// (runtime/src/contact/zone_system.cpp: node_offsets, SurfaceModel::height_offsets), white-box,
-// against 50-digit references at the same nodes. The nodes are placed in s, where the
-// equations are posed; their angles are rounded by a few ulps, and the heights' slope times
-// that rounding is noise at every node, which a zone's coefficients d_j = j G_j / h multiply
-// by j / h. What matters is the noise, not a smooth error: the test measures the largest
-// Chebyshev coefficient of the error beyond the first eighth, G_j (j >= M/8), for the offsets
-// and, for comparison, for the heights taken at the nodes' angles.
+// (runtime/src/contact/zone_system.cpp: node_offsets, node_heights, SurfaceModel::height_offsets),
+// white-box, against 50-digit references. The nodes are placed in s, where the equations are
+// posed; their angles are rounded by a few ulps, and the nodes themselves by half an ulp, and
+// the heights' slope times either rounding is noise at every node, which a zone's
+// coefficients d_j = j G_j / h multiply by j / h. What matters is the noise, not a smooth
+// error: the tests measure the largest Chebyshev coefficient of the error beyond the first
+// eighth, G_j (j >= M/8), against the heights at the doubles' nodes for the offsets (and, for
+// comparison, the angles), and at the exact nodes for node_heights (and, for comparison, the
+// offsets).
 #define BOOST_TEST_MODULE zone_heights
 #include <boost/math/constants/constants.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -13,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "contact/chebyshev.hpp"
@@ -55,32 +58,59 @@ double tail(std::vector<double> error) {
   return largest;
 }
 
-struct Noise {
-  double offsets = 0, angles = 0;
+struct Expectation {
+  Case c;
+  double bound;
 };
 
-Noise noise(const Case& c) {
+// Heights as the solver forms them at a zone's nodes x (angles), from the reference x_ref and
+// the nodes' offsets in s.
+using Heights =
+    std::function<std::vector<double>(const detail::SurfaceModel&, const detail::ZoneGeometry&,
+                                      const std::vector<double>& x, double x_ref, const std::vector<double>& offsets)>;
+
+const Heights by_offsets = [](const detail::SurfaceModel& model, const detail::ZoneGeometry&,
+                              const std::vector<double>& x, double x_ref, const std::vector<double>& offsets) {
+  std::vector<double> out(x.size());
+  model.height_offsets(x.data(), offsets.data(), x.size(), x_ref, out.data());
+  return out;
+};
+const Heights by_angles = [](const detail::SurfaceModel& model, const detail::ZoneGeometry&,
+                             const std::vector<double>& x, double x_ref, const std::vector<double>&) {
+  std::vector<double> out(x.size());
+  model.height_differences(x.data(), x.size(), x_ref, out.data());
+  return out;
+};
+const Heights by_node_heights = [](const detail::SurfaceModel& model, const detail::ZoneGeometry& g,
+                                   const std::vector<double>& x, double,
+                                   const std::vector<double>&) { return detail::node_heights(model, g, x); };
+
+// The noise of each way of forming the heights against 50-digit heights at the nodes as the
+// zone's equations place them, 1 - s_i = 2 sin^2(a/2) + h (1 - tau_i) from the doubles sin(a/2)
+// and h, the reference at the double x_ref; tau_i the doubles chebyshev::nodes or, with
+// `exact_nodes`, cos(pi (i + 1/2) / M) itself.
+std::vector<double> noise(const Case& c, const std::vector<Heights>& ways, bool exact_nodes) {
+  using boost::multiprecision::cos;
   const Surface surface(c.waviness, c.roughness);
-  const detail::SurfaceModel& model = *surface.model();
   const detail::ZoneGeometry g(c.a, c.b);
   const std::vector<double> x = detail::node_angles(g, c.nodes);
   const double x_ref = x[x.size() / 2];
   const std::vector<double> offsets = detail::node_offsets(g, c.nodes, x_ref);
-  std::vector<double> by_offsets(x.size()), by_angles(x.size());
-  model.height_offsets(x.data(), offsets.data(), x.size(), x_ref, by_offsets.data());
-  model.height_differences(x.data(), x.size(), x_ref, by_angles.data());
-  // The nodes as the zone's equations place them, 1 - s_i = 2 sin^2(a/2) + h (1 - tau_i), from
-  // the doubles sin(a/2) and h; the reference at the double x_ref.
   const std::vector<double>& tau = chebyshev::nodes(c.nodes);
-  const Real sa = std::sin(c.a / 2), h = g.h;
-  const Real y_ref = height(c, boost::multiprecision::cos(Real(x_ref)));
-  std::vector<double> offsets_error(x.size()), angles_error(x.size());
+  const Real sa = std::sin(c.a / 2), h = g.h, y_ref = height(c, cos(Real(x_ref)));
+  std::vector<Real> exact(x.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const Real exact = height(c, 1 - (2 * sa * sa + h * (1 - Real(tau[i])))) - y_ref;
-    offsets_error[i] = static_cast<double>(Real(by_offsets[i]) - exact);
-    angles_error[i] = static_cast<double>(Real(by_angles[i]) - exact);
+    const Real t = exact_nodes ? cos(boost::math::constants::pi<Real>() * (Real(i) + 0.5) / c.nodes) : Real(tau[i]);
+    exact[i] = height(c, 1 - (2 * sa * sa + h * (1 - t))) - y_ref;
   }
-  return {tail(offsets_error), tail(angles_error)};
+  std::vector<double> noises;
+  for (const Heights& way : ways) {
+    const std::vector<double> formed = way(*surface.model(), g, x, x_ref, offsets);
+    std::vector<double> error(x.size());
+    for (std::size_t i = 0; i < x.size(); ++i) error[i] = static_cast<double>(Real(formed[i]) - exact[i]);
+    noises.push_back(tail(error));
+  }
+  return noises;
 }
 
 }  // namespace
@@ -91,10 +121,6 @@ BOOST_AUTO_TEST_CASE(heights_at_the_nodes_carry_no_noise_of_the_angles) {
   // offsets give 3.2e-18), well below it at the tip (3.5e-18; the offsets 2e-23), and 1e-18
   // on a top zone, where the angles are exact to 3e-19 already and offsets taken from m and
   // cos x_ref themselves gave 1e-15.
-  struct Expectation {
-    Case c;
-    double bound;
-  };
   const std::vector<Expectation> cases = {
       // Campaign seed 31, sweep 70 at P = 12.49: a zone ending 3.8e-4 short of the kink.
       {{"a zone beside the kink, n = 60, H2 = 0.2",
@@ -122,9 +148,41 @@ BOOST_AUTO_TEST_CASE(heights_at_the_nodes_carry_no_noise_of_the_angles) {
        1e-18},
   };
   for (const Expectation& e : cases) {
-    const Noise n = noise(e.c);
-    BOOST_TEST_MESSAGE(e.c.what << ": noise " << n.offsets << " by the offsets, " << n.angles << " by the angles");
-    BOOST_TEST(n.offsets <= e.bound, e.c.what << ": noise " << n.offsets << " by the offsets (bound " << e.bound
-                                              << "; by the angles " << n.angles << ")");
+    const std::vector<double> n = noise(e.c, {by_offsets, by_angles}, false);
+    BOOST_TEST_MESSAGE(e.c.what << ": noise " << n[0] << " by the offsets, " << n[1] << " by the angles");
+    BOOST_TEST(n[0] <= e.bound, e.c.what << ": noise " << n[0] << " by the offsets (bound " << e.bound
+                                         << "; by the angles " << n[1] << ")");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(heights_at_the_exact_nodes_carry_no_noise_of_their_rounding) {
+  // The transform takes the doubles tau_i for the exact nodes cos(pi (i + 1/2) / M); the
+  // heights' slope times that rounding is noise too (node_heights). Each zone is a top zone
+  // of a contact that was reported above the default tolerance 1e-10 for it (campaign seed 45,
+  // docs/campaigns.md): the noise against 50-digit heights at the exact nodes, by node_heights
+  // and by the heights at the doubles alone.
+  const std::vector<Expectation> cases = {
+      // Sweep 262 at P = 7.51395: three harmonics on the sine, 52 zones a period.
+      {{"a top zone of 5346 nodes, m = 0, n = 8, 838 and 302",
+        {1, 10, 0, 1},
+        {{0.013420202888427383, 8}, {0.0012590618089401303, 838}, {0.0020363844247388756, 302}},
+        0,
+        2.4854516504414237,
+        5346},
+       1.5e-17},
+      // Sweep 241 at P = 9.65428: the wave curve's top zone ending past the kink, 498 zones.
+      {{"a top zone of 8192 nodes past the kink, m = 7.59, n = 996",
+        {1, 10, 7.5931568019005065, 1},
+        {{0.0037560694304024991, 996}},
+        0,
+        1.572607852519798,
+        8192},
+       1.5e-17},
+  };
+  for (const Expectation& e : cases) {
+    const std::vector<double> n = noise(e.c, {by_node_heights, by_offsets}, true);
+    BOOST_TEST_MESSAGE(e.c.what << ": noise " << n[0] << " by node_heights, " << n[1] << " at the doubles");
+    BOOST_TEST(n[0] <= e.bound, e.c.what << ": noise " << n[0] << " by node_heights (bound " << e.bound
+                                         << "; at the doubles " << n[1] << ")");
   }
 }

@@ -23,10 +23,11 @@ using boost::math::double_constants::pi;
 // multiplies coefficient j by j, a first-kind equation's amplification of noise).
 constexpr int tabulated = 128;
 
-// The nodes and the transform's cosines cos(pi j (i + 1/2) / M) of one M, computed once; stored
-// node by node, so that the transform adds one node's column to all coefficients at once.
+// The nodes, their roundings and the transform's cosines cos(pi j (i + 1/2) / M) of one M,
+// computed once; the cosines stored node by node, so that the transform adds one node's column
+// to all coefficients at once.
 struct Table {
-  std::vector<double> nodes, cosines;  // cosines[i * M + j], for M <= tabulated
+  std::vector<double> nodes, roundings, cosines;  // cosines[i * M + j], for M <= tabulated
 };
 
 const Table& table(int M) {
@@ -37,7 +38,15 @@ const Table& table(int M) {
   if (!entry) {
     entry = std::make_unique<Table>();
     entry->nodes.resize(static_cast<std::size_t>(M));
-    for (int i = 0; i < M; ++i) entry->nodes[static_cast<std::size_t>(i)] = std::cos(pi * (i + 0.5) / M);
+    entry->roundings.resize(static_cast<std::size_t>(M));
+    for (int i = 0; i < M; ++i) {
+      const double node = std::cos(pi * (i + 0.5) / M);
+      entry->nodes[static_cast<std::size_t>(i)] = node;
+      // In long double (11 more bits on x86-64, 49 on binary128; where it is double, none):
+      // the rounding to a few digits.
+      const long double exact = std::cos(boost::math::long_double_constants::pi * (i + 0.5L) / M);
+      entry->roundings[static_cast<std::size_t>(i)] = static_cast<double>(exact - node);
+    }
     if (M > tabulated) return *entry;
     entry->cosines.resize(static_cast<std::size_t>(M) * static_cast<std::size_t>(M));
     for (int j = 0; j < M; ++j) {
@@ -132,6 +141,8 @@ __attribute__((target_clones("avx512f", "avx2", "default"))) void transform_by_c
 }  // namespace
 
 const std::vector<double>& nodes(int M) { return table(M).nodes; }
+
+const std::vector<double>& node_roundings(int M) { return table(M).roundings; }
 
 void coefficients(const double* values, int M, double* out) {
   if (M > tabulated) {

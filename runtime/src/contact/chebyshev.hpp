@@ -9,6 +9,9 @@ namespace wavecontact::detail::chebyshev {
 
 // tau_i = cos(pi (i + 1/2) / M), i = 0 .. M - 1: decreasing from near 1 to near -1.
 const std::vector<double>& nodes(int M);
+// How far each exact node lies from nodes(M)[i], its double (half an ulp at most, to a few
+// digits): the transform takes the doubles for the exact nodes.
+const std::vector<double>& node_roundings(int M);
 
 // The coefficients c_0 .. c_{M-1} of the polynomial of degree M - 1 through `values` at
 // nodes(M): c_j = (2 - [j = 0]) / M sum_i values_i T_j(tau_i).

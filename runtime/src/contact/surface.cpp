@@ -65,8 +65,10 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
   // m (c |c0| - c0 |c|)) / ((1 + m |c|) (1 + m |c0|)), the second term 0 on one branch and of
   // the sign of c - c0 across; each harmonic's cos(n x) - cos(n x0) = -2 sin(n x0 + u) sin u,
   // u = n (x - x0) / 2, with n x0 as a sum of two doubles (its rounding, by a fused
-  // multiply-add, kept apart from u).
-  s->height_steps = [=](double x0, const double* ds, const double* delta, std::size_t count, double* out) {
+  // multiply-add, kept apart from u). The slopes in s from the same sines: Y'(|c|) and each
+  // harmonic's H n sin(n x) / sin x, sin(n x) = sin(n x0 + 2u).
+  s->height_steps = [=](double x0, const double* ds, const double* delta, std::size_t count, double* out,
+                        const double* sines, double* slopes) {
     const double c0 = std::cos(x0), denominator_c0 = 1 + m * std::fabs(c0);
     struct Phase {
       double n, H, sine, cosine, rounding;  // sin and cos of n x0 as rounded, n x0 - that
@@ -80,12 +82,18 @@ Surface::Surface(const WavinessParams& w, const std::vector<Harmonic>& roughness
       const double c = c0 + ds[i];
       double dy = H1 * (m + 1) * (ds[i] + m * (c * std::fabs(c0) - c0 * std::fabs(c))) /
                   ((1 + m * std::fabs(c)) * denominator_c0);
+      double dy_ds = slopes ? generated::waviness_height_slope(H1, m, std::fabs(c)) : 0.0;
       for (const Phase& h : phases) {
         const double u = h.n * delta[i] / 2, sin_u = std::sin(u), cos_u = std::cos(u);
         const double sum_sine = h.sine * cos_u + h.cosine * sin_u + h.rounding * (h.cosine * cos_u - h.sine * sin_u);
         dy += h.H * -2 * sum_sine * sin_u;
+        if (slopes && sines[i] > 0) {
+          const double sum_cosine = h.cosine * cos_u - h.sine * sin_u;
+          dy_ds += h.H * h.n * (sum_sine * cos_u + sum_cosine * sin_u) / sines[i];
+        }
       }
       out[i] = dy;
+      if (slopes) slopes[i] = dy_ds;
     }
   };
   if (m > 0) {
@@ -122,9 +130,13 @@ Surface::Surface(const Profile& profile) : b1_(profile.params().b1), E_(profile.
   auto s = std::make_shared<detail::SurfaceModel>();
   s->height = [e, q](double x) { return e.height(q.data(), std::cos(x)); };
   s->slope = [e, q](double x) { return -std::sin(x) * e.height_slope(q.data(), std::cos(x)); };
-  s->height_steps = [e, q](double x0, const double* ds, const double*, std::size_t count, double* out) {
+  s->height_steps = [e, q](double x0, const double* ds, const double*, std::size_t count, double* out, const double*,
+                           double* slopes) {
     const double c0 = std::cos(x0), y0 = e.height(q.data(), c0);
-    for (std::size_t i = 0; i < count; ++i) out[i] = e.height(q.data(), c0 + ds[i]) - y0;
+    for (std::size_t i = 0; i < count; ++i) {
+      out[i] = e.height(q.data(), c0 + ds[i]) - y0;
+      if (slopes) slopes[i] = e.height_slope(q.data(), c0 + ds[i]);
+    }
   };
   const double E = profile.params().E;
   if (e.branch.beta > 0) {

@@ -15,21 +15,22 @@ namespace wavecontact::detail {
 void SurfaceModel::height_differences(const double* x, std::size_t count, double x0, double* out) const {
   std::vector<double> ds(count), delta(count);
   for (std::size_t i = 0; i < count; ++i) ds[i] = cos_difference(x[i], x0), delta[i] = x[i] - x0;
-  height_steps(x0, ds.data(), delta.data(), count, out);
+  height_steps(x0, ds.data(), delta.data(), count, out, nullptr, nullptr);
 }
 
-void SurfaceModel::height_offsets(const double* x, const double* ds, std::size_t count, double x0, double* out) const {
+void SurfaceModel::height_offsets(const double* x, const double* ds, std::size_t count, double x0, double* out,
+                                  double* slopes) const {
   // sin(x - x0) = c0 sin x - c sin x0 = -ds (c0 (c + c0) / (sin x + sin x0) + sin x0), c = c0 + ds
   // (by sin x - sin x0 = (c0^2 - c^2) / (sin x + sin x0)): terms of one sign where c and c0 have
   // one sign; cos(x - x0) = c c0 + sin x sin x0.
   const double c0 = std::cos(x0), sin0 = std::sin(x0);
-  std::vector<double> delta(count);
+  std::vector<double> delta(count), sines(count);
   for (std::size_t i = 0; i < count; ++i) {
     const double c = c0 + ds[i], sin_x = std::sin(x[i]);
     const double sine = -ds[i] * (c0 * (c + c0) / (sin_x + sin0) + sin0), cosine = c * c0 + sin_x * sin0;
-    delta[i] = std::atan2(sine, cosine);
+    delta[i] = std::atan2(sine, cosine), sines[i] = sin_x;
   }
-  height_steps(x0, ds, delta.data(), count, out);
+  height_steps(x0, ds, delta.data(), count, out, sines.data(), slopes);
 }
 
 void locate_top(SurfaceModel& surface) {

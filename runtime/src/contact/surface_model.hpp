@@ -35,14 +35,18 @@ struct SurfaceModel {
   // out[i] = y(x) - y(x0) at the points x = x0 + delta[i] in x^, s = cos x0 + ds[i] in s,
   // i < count, each offset given both ways and each to its own relative precision (the
   // waviness takes ds, the harmonics delta), without the cancellation of the plain
-  // difference; one call for a zone's nodes, whatever concerns x0 computed once.
-  std::function<void(double x0, const double* ds, const double* delta, std::size_t count, double* out)> height_steps;
+  // difference; one call for a zone's nodes, whatever concerns x0 computed once. With
+  // `slopes`, also dy/ds at the points (to a few digits), from sin x^ there (`sines`).
+  std::function<void(double x0, const double* ds, const double* delta, std::size_t count, double* out,
+                     const double* sines, double* slopes)>
+      height_steps;
   // The same at angles x[i] (the offsets from them).
   void height_differences(const double* x, std::size_t count, double x0, double* out) const;
   // The same at the points s = cos x0 + ds[i], x[i] their angles to a few ulps (which the
   // offsets in x^ take only as relative factors): a zone's Chebyshev nodes, placed exactly in
-  // s whatever the rounding of their angles.
-  void height_offsets(const double* x, const double* ds, std::size_t count, double x0, double* out) const;
+  // s whatever the rounding of their angles; with `slopes`, dy/ds there as well.
+  void height_offsets(const double* x, const double* ds, std::size_t count, double x0, double* out,
+                      double* slopes = nullptr) const;
   std::vector<Kink> kinks;
   double resolution = 0;  // half the shortest wavelength, in x^: pi / (highest harmonic)
   double E = 0;           // reduced modulus E*

@@ -82,6 +82,13 @@ std::vector<double> node_offsets(const ZoneGeometry& g, int count, double x_ref)
 // those to 1e-17, a power of two from 32 (ZoneFields::at_nodes); 0 for no other zone.
 int smooth_field_terms(const std::vector<ZoneUnknowns>& zones, std::size_t k);
 
+// The heights y - y(x_ref) at a zone's Chebyshev nodes x (angles; the reference x_ref =
+// x[M/2]) as the transform takes them: at the exact nodes, whose doubles the nodes are. At
+// the nodes as placed in s (node_offsets), plus each node's rounding (chebyshev::node_roundings)
+// times h and the slope dy/ds there: one node's error spreads over every coefficient, and
+// next to the top the slope of roughness n is up to H n^2.
+std::vector<double> node_heights(const SurfaceModel& surface, const ZoneGeometry& g, const std::vector<double>& x);
+
 // The Chebyshev coefficients G_j of a zone's right-hand side at its nodes x (angles):
 // (E/2)(y - y_top) less the other zones' potential `others` (a batch at x with the reference
 // x[M/2]; empty: none) and the zone's own kink correction's. Formed as differences from the
