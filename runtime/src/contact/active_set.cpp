@@ -430,7 +430,7 @@ SettleOutcome settle(const std::shared_ptr<const SurfaceModel>& model, double P,
         }
       }
       if (v.tensions.empty() && v.penetrations.empty()) {
-        if (!grow_nodes(c, surface, working_tail)) return {std::move(c), {}};
+        if (!grow_nodes(c, surface, working_tail)) return {std::move(c), {}, met_narrow_gap};
         grown_after_converging = true;
       } else {
         std::vector<Tension> cut = v.tensions;

@@ -47,7 +47,8 @@ inline constexpr int most_working_nodes = 4096;  // while settling, the zones ar
 struct LoadContact {
   double P = 0;
   Configuration contact;
-  bool continued = false;  // settled from such a guess at the loads before it
+  bool continued = false;       // settled from such a guess at the loads before it
+  bool met_narrow_gap = false;  // its settling met a tension that narrow gaps would hold
 };
 Configuration nearby_start(const SurfaceModel& surface, double P, const LoadContact& last, const LoadContact* before);
 

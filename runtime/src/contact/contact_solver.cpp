@@ -180,7 +180,7 @@ LoadContact ContactSolver::settle_at(double P, const LoadContact* previous, cons
       (!before || previous->continued || same_zones(before->contact, previous->contact))) {
     if (std::optional<Configuration> c = attempt(
             "the previous loads' contacts", nearby_start(*surface_, P, *previous, before), {quick_changes, true})) {
-      return {P, std::move(*c), true};
+      return {P, std::move(*c), true, met_narrow_gap};
     }
   }
   if (std::optional<Configuration> c = single_zone(P)) return {P, std::move(*c)};
@@ -192,7 +192,8 @@ LoadContact ContactSolver::settle_at(double P, const LoadContact* previous, cons
   bool narrow_tried = false;
   for (const auto& [from, refined] : {std::pair{"the grid's contact", 1}, std::pair{"a finer grid's contact", 2}}) {
     Configuration seed = grid_seed(*surface_, P, refined * cells, working_nodes);
-    if (std::optional<Configuration> c = attempt(from, seed, {most_changes})) return {P, std::move(*c)};
+    if (std::optional<Configuration> c = attempt(from, seed, {most_changes}))
+      return {P, std::move(*c), false, met_narrow_gap};
     if (met_narrow_gap && !narrow_tried) {
       narrow_tried = true;
       if (std::optional<Configuration> c =
@@ -227,7 +228,12 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
     const Checkpoint checkpoint = [&](double residual) { check_budget(residual); };
     LoadContact settled = settle_at(P, previous ? &*previous : nullptr, before ? &*before : nullptr);
     // A contact that its finer nodes refuse (a tension or a penetration that the working nodes
-    // did not show) settles again from the refined configuration.
+    // did not show) settles again from the refined configuration. Where that fails and the
+    // settling had met a tension that narrow gaps would hold (two zones beside a gap too narrow
+    // for their nodes; campaign seed 46, sweep 134: m = 0, n = 710, 624 and 416 at P = 2.5042,
+    // zones of 2056 and 2284 nodes beside a gap of 1e-5 in x^, whose refinement's change grew
+    // and whose refined contact had a tension), the grid's seed settles again with them.
+    bool narrow_tried = false;
     for (int again = 0;; ++again) {
       Refinement r = refine(surface_, settled.contact, P, tolerance_, fixed_nodes_, checkpoint);
       if (r.solved) {
@@ -237,6 +243,11 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
       if (again == most_resettles) throw BeyondReach(r.refusal);
       const bool narrow = !r.refused.narrow_gaps.empty();
       SettleOutcome s = settle(surface_, P, std::move(r.refused), {most_changes, false, narrow}, checkpoint);
+      if (!s.contact && !narrow && settled.met_narrow_gap && !narrow_tried) {
+        narrow_tried = true;
+        s = settle(surface_, P, grid_seed(*surface_, P, seed_cells(*surface_), working_nodes),
+                   {most_changes, false, true}, checkpoint);
+      }
       if (!s.contact) throw BeyondReach(r.refusal + "; settled again from it: " + s.failure);
       settled = {P, std::move(*s.contact)};
     }
