@@ -1,4 +1,5 @@
-// A seeded random campaign of load sweeps: surfaces of the wave curve (m in [0, 35]) with 1 to
+// A seeded random campaign of load sweeps: surfaces of the wave curve (m = 0 a quarter of the
+// time, else uniform in [0, --most-m], 35 by default) with 1 to
 // --harmonics roughness harmonics (even n up to --max-n, slopes H n from 0.1 to 20, H <= 0.2), each swept
 // by one solve_contact call over --loads loads from pa/p* = 0.01 to beyond full contact. Every
 // contact returned is checked on the whole period, independently of the solver's own
@@ -7,7 +8,7 @@
 // stall; one whose estimate misses the tolerance is reported apart.
 //
 //   contact_campaign --seed S --sweeps N [--max-n 1024] [--loads 8] [--tolerance 1e-8]
-//                    [--harmonics 4] [--first K]
+//                    [--harmonics 4] [--first K] [--most-m 35]
 // prints one line a sweep and a summary; exits 0 only with no stall and no violation.
 #include <chrono>
 #include <cmath>
@@ -27,7 +28,7 @@ constexpr double b1 = 10, H1 = 1, E = 1;
 struct Settings {
   unsigned seed = 1;
   int sweeps = 10, first = 0, max_n = 1024, loads = 8, harmonics = 4;
-  double tolerance = 1e-8;
+  double tolerance = 1e-8, most_m = 35;
 };
 
 struct Sweep {
@@ -41,7 +42,7 @@ Sweep draw(const Settings& s, int k) {
   std::mt19937_64 random(s.seed * 1000003ULL + static_cast<unsigned long long>(k));
   std::uniform_real_distribution<double> unit(0, 1);
   Sweep w;
-  w.m = unit(random) < 0.25 ? 0 : 35 * unit(random);
+  w.m = unit(random) < 0.25 ? 0 : s.most_m * unit(random);
   // No more harmonics than there are even n up to max_n (--max-n 4 drew three of n = 2 and 4,
   // and searched for the third for ever).
   const int count = std::min(1 + static_cast<int>(s.harmonics * unit(random)), s.max_n / 2);
@@ -99,6 +100,8 @@ int main(int argc, char** argv) {
       s.tolerance = std::stod(value);
     else if (key == "--harmonics")
       s.harmonics = std::stoi(value);
+    else if (key == "--most-m")
+      s.most_m = std::stod(value);
     else {
       std::fprintf(stderr, "contact_campaign: unknown option %s\n", key.c_str());
       return 2;
@@ -106,6 +109,10 @@ int main(int argc, char** argv) {
   }
   if (s.max_n < 2 || s.loads < 2) {
     std::fprintf(stderr, "contact_campaign: --max-n %d and --loads %d must be at least 2\n", s.max_n, s.loads);
+    return 2;
+  }
+  if (!(s.most_m >= 0)) {
+    std::fprintf(stderr, "contact_campaign: --most-m %g must be at least 0\n", s.most_m);
     return 2;
   }
   if (s.harmonics < 1 || s.harmonics > static_cast<int>(wavecontact::max_harmonics)) {
