@@ -233,8 +233,8 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
     // working nodes: campaign seed 46, sweep 134 (m = 0, n = 710, 624 and 416 at P = 2.5042)
     // had settled two zones beside a gap of 1e-5 in x^ instead, whose refinement's change grew
     // (2056 and 2284 nodes) and whose refined contact had a tension; settling again from that
-    // took 32 s and failed, while the narrow gaps settle in 0.1 s.
-    bool narrow_tried = false;
+    // took 32 s and failed, while the narrow gaps settle in 0.1 s. Whichever follows replaces
+    // `settled` with a contact whose met_narrow_gap is clear, so this runs once a load.
     for (int again = 0;; ++again) {
       Refinement r = refine(surface_, settled.contact, P, tolerance_, fixed_nodes_, checkpoint);
       if (r.solved) {
@@ -243,8 +243,7 @@ std::vector<SolvedContact> ContactSolver::solve(const std::vector<double>& loads
       }
       if (again == most_resettles) throw BeyondReach(r.refusal);
       const bool narrow = !r.refused.narrow_gaps.empty();
-      if (!narrow && settled.met_narrow_gap && !narrow_tried) {
-        narrow_tried = true;
+      if (!narrow && settled.met_narrow_gap) {
         SettleOutcome s = settle(surface_, P, grid_seed(*surface_, P, seed_cells(*surface_), working_nodes),
                                  {most_changes, false, true}, checkpoint);
         if (s.contact) {
