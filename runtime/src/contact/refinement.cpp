@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,63 @@ double rounding_estimate(const std::shared_ptr<const SurfaceModel>& surface, con
   return moved.empty() ? 0.0 : *std::max_element(moved.begin(), moved.end());
 }
 
+// The largest of the zones' differences (zone_differences), infinite if one is not a number.
+double largest_difference(const std::vector<double>& difference) {
+  double worst = 0;
+  for (double d : difference) worst = std::isnan(d) ? std::numeric_limits<double>::infinity() : std::max(worst, d);
+  return worst;
+}
+
+// How far one more Newton step, its linear system solved to a hundredth, moves a solution (as
+// the refinement measures its changes, to `highest`): Newton's error in it, and the solution
+// it moves to. (Solved to a tenth, the step of seed 52's sweep 45 below was a third of the
+// true one.)
+struct NewtonStep {
+  double change = 0;
+  std::shared_ptr<const ContactSolution> to;
+};
+NewtonStep newton_step(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
+                       const ContactSolution& from, double highest) {
+  auto to = std::make_shared<const ContactSolution>(surface, system.newton_corrected(from.configuration()));
+  return {largest_difference(zone_differences(from, *to, highest)), std::move(to)};
+}
+
+// A solution of the refinement and Newton's error in it, where measured.
+struct Polished {
+  std::shared_ptr<const ContactSolution> solution;
+  std::optional<double> newton_error;
+};
+
+// Newton's method stops short of its tolerance where its residual reaches its rounding; below
+// 1e-10, at the first iteration that does not halve it (zone_newton.cpp, rounding_reached).
+// Next to a narrow gap, where the residual barely sees the ends' places, that left the ends
+// 3.6e-7 from the solution at a residual of 2e-11 (seed 52, sweep 45 with 60 loads: a gap of
+// 8e-5 in x^), at two node counts alike, whose change (8.1e-10) did not see it. Such a
+// solution is corrected by Newton's steps (newton_step) as long as they move it by more than
+// a tenth of the tolerance and by less than a quarter of the step before (beyond, rounding
+// moves it). `highest`: the refinement's largest pressure, 0 for the solution's own.
+Polished polished(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
+                  ZoneSystem::Result newton, double target, double highest, double tolerance) {
+  Polished now{std::make_shared<const ContactSolution>(surface, std::move(newton.configuration)), std::nullopt};
+  if (newton.residual < target) return now;
+  if (highest == 0) highest = highest_sampled_pressure(*now.solution);
+  NewtonStep next;
+  if (newton.corrected) {
+    next.to = std::make_shared<const ContactSolution>(surface, std::move(*newton.corrected));
+    next.change = largest_difference(zone_differences(*now.solution, *next.to, highest));
+  } else {
+    next = newton_step(surface, system, *now.solution, highest);
+  }
+  now.newton_error = next.change;
+  for (int step = 0; step < 3 && next.change > 0.1 * tolerance; ++step) {
+    NewtonStep after = newton_step(surface, system, *next.to, highest);
+    if (!(after.change < 0.25 * next.change)) break;
+    now = {std::move(next.to), after.change};
+    next = std::move(after);
+  }
+  return now;
+}
+
 }  // namespace
 
 Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Configuration& settled, double P,
@@ -111,7 +169,7 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
         throw BeyondReach("wavecontact::solve_contact: Newton's method did not converge refining the contact at P = " +
                           format(P) + " (residual " + residual_text + ")");
       }
-      if (system.windows_fit(r.configuration) || attempt == 2) return r.configuration;
+      if (system.windows_fit(r.configuration) || attempt == 2) return r;
       start = r.configuration;  // a kink window chosen again
     }
   };
@@ -119,10 +177,12 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   if (fixed_nodes > 0) {
     for (ZoneUnknowns& z : c.zones) z.d.resize(static_cast<std::size_t>(fixed_nodes), 0.0);
   }
-  c = solve(c);
   // Each configuration's solution formed once: the differences, the verification and the
   // rounding share them.
-  auto current = std::make_shared<const ContactSolution>(surface, c);
+  Polished first = polished(surface, system, solve(c), residual, 0.0, tolerance);
+  std::shared_ptr<const ContactSolution> current = std::move(first.solution);
+  std::optional<double> newton_error = first.newton_error;  // current's
+  c = current->configuration();
   std::shared_ptr<const ContactSolution> coarser_solution;  // the last round's
   // A zone keeps doubling while its change is above half the tolerance and still falls
   // (by four at least: below, its rounding is reached), or while its kink window holds fewer
@@ -145,7 +205,8 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
       if (z.d.size() >= most(z)) z.d.resize(z.d.size() / 2), halved = true;
     }
     if (halved) {
-      const std::vector<double> change = zone_differences(ContactSolution(surface, solve(coarser)), *current, highest);
+      const std::vector<double> change =
+          zone_differences(ContactSolution(surface, solve(coarser).configuration), *current, highest);
       for (std::size_t k = 0; k < change.size(); ++k) {
         if (c.zones[k].d.size() >= most(c.zones[k])) capped_change = std::max(capped_change, change[k]);
       }
@@ -161,8 +222,9 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
       if (again && target > n) finer.zones[k].d.resize(target, 0.0), grown = true;
     }
     if (!grown) break;
-    finer = solve(finer);
-    auto refined = std::make_shared<const ContactSolution>(surface, finer);
+    Polished refined_polished = polished(surface, system, solve(finer), residual, highest, tolerance);
+    std::shared_ptr<const ContactSolution> refined = std::move(refined_polished.solution);
+    finer = refined->configuration();
     const std::vector<double> change = zone_differences(*current, *refined, highest);
     for (std::size_t k = 0; k < change.size(); ++k) {
       if (finer.zones[k].d.size() != c.zones[k].d.size()) {
@@ -180,6 +242,7 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     c = std::move(finer);
     coarser_solution = std::move(current);
     current = std::move(refined);
+    newton_error = refined_polished.newton_error;
   }
   const Verification v = verify(*current, gap_tolerance * range, pressure_tolerance);
   double error =
@@ -199,6 +262,14 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   // less than the tolerance, with half the nodes (half the cost: on 100-load sweeps at
   // n = 32 the estimate took 17 % of the time; the error estimates reported stayed the same).
   const double rounding = rounding_estimate(surface, system, coarser_solution ? *coarser_solution : *current, highest);
+  // Newton's error in the result, where Newton's method reached its tolerance too: there the
+  // residual bounds it only as far as the equations' conditioning allows.
+  if (!newton_error) newton_error = newton_step(surface, system, *current, highest).change;
+  if (tracing()) {
+    std::fprintf(stderr, "wavecontact trace: estimate: discretisation %.3g, Newton's %.3g, rounding %.3g\n", error,
+                 *newton_error, rounding);
+  }
+  error = std::max(error, *newton_error);
   // Admissible within the error of the solution itself (a gap of the estimate's order next to
   // an end whose place is as uncertain).
   const double allowed = std::max(gap_tolerance, 10 * std::max(error, rounding)) * range;

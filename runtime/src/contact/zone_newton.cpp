@@ -191,6 +191,7 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
   double best = std::numeric_limits<double>::infinity();  // the last residual that halved the one before
   Configuration lowest;                                   // the iterate of the lowest residual so far
   double lowest_residual = std::numeric_limits<double>::infinity();
+  std::optional<Configuration> lowest_corrected;    // it moved by its Newton step
   int stalled = 0;                                  // iterations without halving the best residual
   bool coarse_steps = true;                         // linear solves no finer than the tolerance needs (forcing_term)
   double difference_step = coarse_difference_step;  // of the Jacobian's products (linear_solve)
@@ -216,12 +217,17 @@ ZoneSystem::Result ZoneSystem::newton(Configuration start, double tolerance, con
       // best iterate is the result.
       at.c = std::move(lowest);
       result.residual = lowest_residual;
+      result.corrected = std::move(lowest_corrected);
       return finish(lowest_residual < 1e-8 ? Outcome::converged : Outcome::failed);
     }
     const double forcing = forcing_term(L, result.residual, coarse_steps ? tolerance : 0.0);
     const std::vector<double> step = newton_step(at, forcing, difference_step);
+    if (result.residual == lowest_residual) lowest_corrected = unpack(plus(at.X, 1, step), L);  // `at` is the lowest
     // A step below the unknowns' rounding changes nothing: the residual is at its floor.
-    if (result.residual < 1e-9 && largest(step) < 1e-13) return finish(Outcome::converged);
+    if (result.residual < 1e-9 && largest(step) < 1e-13) {
+      result.corrected = unpack(plus(at.X, 1, step), L);
+      return finish(Outcome::converged);
+    }
     // Damping: every stretch between consecutive ends keeps a tenth of its length.
     const Damping damped = damping(at.c, L, at.X, step);
     // A full step that would close the stretch twice running within a thousandth of a
@@ -329,6 +335,11 @@ Configuration ZoneSystem::perturbed(const Configuration& c, const std::vector<do
     rhs[at.layout.zones[k].at] = shift[k] / at.layout.zones[k].row_scale;  // the zone's T_0 row
   }
   return unpack(plus(at.X, 1, linear_solve(at, rhs, 1e-3, coarse_difference_step)), at.layout);
+}
+
+Configuration ZoneSystem::newton_corrected(const Configuration& c) const {
+  const Linearisation at = linearise(c, false);
+  return unpack(plus(at.X, 1, newton_step(at, 1e-2, coarse_difference_step)), at.layout);
 }
 
 }  // namespace wavecontact::detail

@@ -138,6 +138,10 @@ class ZoneSystem {
     std::size_t stretch = 0;
     double residual = 0;  // the largest scaled residual reached
     int iterations = 0;
+    // Where Newton's method stopped short of the tolerance, the configuration returned moved by
+    // the Newton step computed there (its linear system solved to a hundredth at least):
+    // how far it is from the solution (newton_corrected, without another linear solve).
+    std::optional<Configuration> corrected;
   };
   // ends_fixed: the ends stay where c has them, their conditions dropped (the linear
   // system of the coefficients and C alone: a consistent start for given zones).
@@ -160,6 +164,10 @@ class ZoneSystem {
   // shifted by shift[k] (a potential): how far a perturbation of the equations, such as their
   // rounding, moves the contact.
   Configuration perturbed(const Configuration& c, const std::vector<double>& shift) const;
+  // c moved by one more Newton step, its linear system solved to a hundredth: how far c is
+  // from the equations' solution (Newton's own error, which the refinement's change between
+  // two node counts does not see where both solutions share it).
+  Configuration newton_corrected(const Configuration& c) const;
 
  private:
   // A point of Newton's method: the configuration, its packed unknowns, its residuals and
