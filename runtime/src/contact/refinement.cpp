@@ -265,6 +265,11 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   // Newton's error in the result, where Newton's method reached its tolerance too: there the
   // residual bounds it only as far as the equations' conditioning allows.
   if (!newton_error) newton_error = newton_step(surface, system, *current, highest).change;
+  // Not a number: no estimate, and no error of the solution's own to admit gaps within.
+  if (!(*newton_error < std::numeric_limits<double>::infinity())) {
+    throw BeyondReach("wavecontact::solve_contact: Newton's step from the refined contact at P = " + format(P) +
+                      " is not a number");
+  }
   if (tracing()) {
     std::fprintf(stderr, "wavecontact trace: estimate: discretisation %.3g, Newton's %.3g, rounding %.3g\n", error,
                  *newton_error, rounding);
