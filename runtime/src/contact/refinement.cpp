@@ -96,17 +96,17 @@ double largest_difference(const std::vector<double>& difference) {
   return worst;
 }
 
-// How far one more Newton step, its linear system solved to a hundredth, moves a solution (as
-// the refinement measures its changes, to `highest`): Newton's error in it, and the solution
-// it moves to. (Solved to a tenth, the step of seed 52's sweep 45 below was a third of the
-// true one.)
+// A solution moved by one more Newton step (ZoneSystem::newton_corrected, or the step Newton's
+// method computed there), and how far that moves it, as the refinement measures its changes
+// (to `highest`): Newton's error in it. (Its linear system solved to a tenth, the step of
+// seed 52's sweep 45 below was a third of the true one.)
 struct NewtonStep {
   double change = 0;
   std::shared_ptr<const ContactSolution> to;
 };
-NewtonStep newton_step(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
-                       const ContactSolution& from, double highest) {
-  auto to = std::make_shared<const ContactSolution>(surface, system.newton_corrected(from.configuration()));
+NewtonStep newton_step(const std::shared_ptr<const SurfaceModel>& surface, const ContactSolution& from,
+                       Configuration corrected, double highest) {
+  auto to = std::make_shared<const ContactSolution>(surface, std::move(corrected));
   return {largest_difference(zone_differences(from, *to, highest)), std::move(to)};
 }
 
@@ -129,16 +129,13 @@ Polished polished(const std::shared_ptr<const SurfaceModel>& surface, const Zone
   Polished now{std::make_shared<const ContactSolution>(surface, std::move(newton.configuration)), std::nullopt};
   if (newton.residual < target) return now;
   if (highest == 0) highest = highest_sampled_pressure(*now.solution);
-  NewtonStep next;
-  if (newton.corrected) {
-    next.to = std::make_shared<const ContactSolution>(surface, std::move(*newton.corrected));
-    next.change = largest_difference(zone_differences(*now.solution, *next.to, highest));
-  } else {
-    next = newton_step(surface, system, *now.solution, highest);
-  }
+  NewtonStep next = newton_step(
+      surface, *now.solution,
+      newton.corrected ? std::move(*newton.corrected) : system.newton_corrected(now.solution->configuration()),
+      highest);
   now.newton_error = next.change;
   for (int step = 0; step < 3 && next.change > 0.1 * tolerance; ++step) {
-    NewtonStep after = newton_step(surface, system, *next.to, highest);
+    NewtonStep after = newton_step(surface, *next.to, system.newton_corrected(next.to->configuration()), highest);
     if (!(after.change < 0.25 * next.change)) break;
     now = {std::move(next.to), after.change};
     next = std::move(after);
@@ -264,7 +261,9 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   const double rounding = rounding_estimate(surface, system, coarser_solution ? *coarser_solution : *current, highest);
   // Newton's error in the result, where Newton's method reached its tolerance too: there the
   // residual bounds it only as far as the equations' conditioning allows.
-  if (!newton_error) newton_error = newton_step(surface, system, *current, highest).change;
+  if (!newton_error) {
+    newton_error = newton_step(surface, *current, system.newton_corrected(current->configuration()), highest).change;
+  }
   // Not a number: no estimate, and no error of the solution's own to admit gaps within.
   if (!(*newton_error < std::numeric_limits<double>::infinity())) {
     throw BeyondReach("wavecontact::solve_contact: Newton's step from the refined contact at P = " + format(P) +
