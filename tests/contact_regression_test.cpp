@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -287,21 +288,30 @@ BOOST_AUTO_TEST_CASE(returning_tension_cut_by_its_parabola) {
 // method stopped at its rounding threshold with the ends 3.6e-7 of the half period from the
 // solution, at both node counts the refinement compared, and at the tolerance 1e-8 the contact
 // was returned with an estimate of 8.1e-10. Now Newton's error is measured and corrected, and
-// at 1e-11 the gap is the merged zone's narrow gap (narrow_gap.hpp). The contact returned at
-// 1e-8 must lie within 1e-8 of that one: its ends (to the half period) and its zones' largest
-// pressures (to the largest).
-BOOST_AUTO_TEST_CASE(contact_beside_a_narrow_gap_within_its_tolerance) {
+// at 1e-11 the gap is the merged zone's narrow gap (narrow_gap.hpp). Beside that gap Newton's
+// steps reach the rounding at a few 1e-9, which one step sampled as 1.8e-9 where the contact
+// returned at 3e-8 and at 1e-8 was 8.5e-9 from the solution. The contacts returned at looser
+// tolerances must lie within their tolerance of the one at 1e-11 and within twice their
+// estimate (both plus the reference's): their ends (to the half period) and their zones'
+// largest pressures (to the largest).
+BOOST_AUTO_TEST_CASE(contact_beside_a_narrow_gap_within_its_tolerance_and_estimate) {
   const Surface s(WavinessParams{1, 10, 0.68710440092254332, 1}, {{0.024836201602389675, 40}});
   const double P = 1.3067696464896517;
-  const Contact coarse = checked_contact(s, P, 1e-8, "seed 52, sweep 45 at 1e-8");
   const Contact fine = checked_contact(s, P, 1e-11, "seed 52, sweep 45 at 1e-11");
-  BOOST_TEST_REQUIRE(coarse.zones_per_period() == fine.zones_per_period());
-  const double bound = 1e-8 + fine.error_estimate();
-  for (std::size_t k = 0; k < fine.zones().size(); ++k) {
-    const ContactZone &a = coarse.zones()[k], &b = fine.zones()[k];
-    const double ends = std::max(std::fabs(a.x_start - b.x_start), std::fabs(a.x_end - b.x_end)) / 10;
-    const double pressure = std::fabs(a.max_pressure - b.max_pressure) / fine.max_pressure();
-    BOOST_TEST(ends <= bound, "zone " << k << ": ends " << ends << " apart");
-    BOOST_TEST(pressure <= bound, "zone " << k << ": largest pressure " << pressure << " apart");
+  for (const double tolerance : {1e-6, 3e-8, 1e-8, 5e-9}) {
+    std::ostringstream label;
+    label << "seed 52, sweep 45 at " << tolerance;
+    const std::string what = label.str();
+    const Contact coarse = checked_contact(s, P, tolerance, what);
+    BOOST_TEST_REQUIRE(coarse.zones_per_period() == fine.zones_per_period(), what);
+    const double bound = std::min(tolerance, 2 * coarse.error_estimate()) + fine.error_estimate();
+    for (std::size_t k = 0; k < fine.zones().size(); ++k) {
+      const ContactZone &a = coarse.zones()[k], &b = fine.zones()[k];
+      const double ends = std::max(std::fabs(a.x_start - b.x_start), std::fabs(a.x_end - b.x_end)) / 10;
+      const double pressure = std::fabs(a.max_pressure - b.max_pressure) / fine.max_pressure();
+      BOOST_TEST(ends <= bound,
+                 what << ", zone " << k << ": ends " << ends << " apart, estimate " << coarse.error_estimate());
+      BOOST_TEST(pressure <= bound, what << ", zone " << k << ": largest pressure " << pressure << " apart");
+    }
   }
 }

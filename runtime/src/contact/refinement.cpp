@@ -116,31 +116,46 @@ struct Polished {
   std::optional<double> newton_error;
 };
 
-// Newton's method stops short of its tolerance where its residual reaches its rounding; below
-// 1e-10, at the first iteration that does not halve it (zone_newton.cpp, rounding_reached).
-// Next to a narrow gap, where the residual barely sees the ends' places, that left the ends
-// 3.6e-7 from the solution at a residual of 2e-11 (seed 52, sweep 45 with 60 loads: a gap of
-// 8e-5 in x^), at two node counts alike, whose change (8.1e-10) did not see it. Such a
-// solution is corrected by Newton's steps (newton_step) as long as they move it by more than
-// a tenth of the tolerance and by less than a quarter of the step before (beyond, rounding
-// moves it). `highest`: the refinement's largest pressure, 0 for the solution's own.
-Polished polished(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
-                  ZoneSystem::Result newton, double target, double highest, double tolerance) {
-  Polished now{std::make_shared<const ContactSolution>(surface, std::move(newton.configuration)), std::nullopt};
-  if (newton.residual < target) return now;
-  if (highest == 0) highest = highest_sampled_pressure(*now.solution);
-  NewtonStep next = newton_step(
-      surface, *now.solution,
-      newton.corrected ? std::move(*newton.corrected) : system.newton_corrected(now.solution->configuration()),
-      highest);
-  now.newton_error = next.change;
-  for (int step = 0; step < 3 && next.change > 0.1 * tolerance; ++step) {
+// A solution corrected by Newton's steps (newton_step; the first given) as long as they move
+// it by more than `looked_at` and by less than a quarter of the step before, and Newton's
+// error in it. A step that does not fall by four has reached the rounding of the
+// equations, and the steps then sample its response: the error is the larger of the last two.
+// Beside a narrow gap that response is far above rounding_estimate's: seed 52's sweep 45 below
+// (two zones 8e-5 apart in x^) at the tolerance 1e-8 was returned 8.5e-9 from the solution,
+// where single steps from it measured 1.8e-9 or 8.9e-9 with the nodes (and two steps in a row
+// on the working nodes 2.3e-8 and 2.5e-8).
+Polished corrected(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
+                   std::shared_ptr<const ContactSolution> from, Configuration first, double highest, double looked_at) {
+  NewtonStep next = newton_step(surface, *from, std::move(first), highest);
+  Polished now{std::move(from), next.change};
+  for (int step = 0; step < 3 && next.change > looked_at; ++step) {
     NewtonStep after = newton_step(surface, *next.to, system.newton_corrected(next.to->configuration()), highest);
-    if (!(after.change < 0.25 * next.change)) break;
+    if (!(after.change < 0.25 * next.change)) {
+      now.newton_error = std::max(next.change, after.change);
+      break;
+    }
     now = {std::move(next.to), after.change};
     next = std::move(after);
   }
   return now;
+}
+
+// Newton's method stops short of its tolerance where its residual reaches its rounding; below
+// 1e-10, at the first iteration that does not halve it (zone_newton.cpp, rounding_reached).
+// Next to a narrow gap, where the residual barely sees the ends' places, that left the ends
+// 3.6e-7 from the solution at a residual of 2e-11 (seed 52, sweep 45 with 60 loads), at two
+// node counts alike, whose change (8.1e-10) did not see it. Such a solution is corrected
+// (corrected(), from the step Newton's method computed at it) while the steps are above a
+// tenth of the tolerance. `highest`: the refinement's largest pressure, 0 for the solution's
+// own.
+Polished polished(const std::shared_ptr<const SurfaceModel>& surface, const ZoneSystem& system,
+                  ZoneSystem::Result newton, double target, double highest, double tolerance) {
+  auto solution = std::make_shared<const ContactSolution>(surface, std::move(newton.configuration));
+  if (newton.residual < target) return {std::move(solution), std::nullopt};
+  if (highest == 0) highest = highest_sampled_pressure(*solution);
+  Configuration first =
+      newton.corrected ? std::move(*newton.corrected) : system.newton_corrected(solution->configuration());
+  return corrected(surface, system, std::move(solution), std::move(first), highest, 0.1 * tolerance);
 }
 
 }  // namespace
@@ -241,6 +256,22 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
     current = std::move(refined);
     newton_error = refined_polished.newton_error;
   }
+  // Rounding moves the solution of the equations, whatever their nodes once they resolve it:
+  // its response is taken on the last round's solution, which the result differs from by
+  // less than the tolerance, with half the nodes (half the cost: on 100-load sweeps at
+  // n = 32 the estimate took 17 % of the time; the error estimates reported stayed the same).
+  const double rounding = rounding_estimate(surface, system, coarser_solution ? *coarser_solution : *current, highest);
+  // Newton's error in the result, where Newton's method reached its tolerance too: there the
+  // residual bounds it only as far as the equations' conditioning allows. A step above ten
+  // times the rounding's response is looked at again, even below a tenth of the tolerance:
+  // seed 52's sweep 45 at 3e-8 measured 1.8e-9 with one step, where the contact was 8.5e-9
+  // from the solution.
+  if (!newton_error) {
+    Polished last = corrected(surface, system, current, system.newton_corrected(current->configuration()), highest,
+                              std::min(0.1 * tolerance, 10 * rounding));
+    current = std::move(last.solution);
+    newton_error = last.newton_error;
+  }
   const Verification v = verify(*current, gap_tolerance * range, pressure_tolerance);
   double error =
       std::max(capped_change, difference.empty() ? 0.0 : *std::max_element(difference.begin(), difference.end()));
@@ -254,16 +285,6 @@ Refinement refine(const std::shared_ptr<const SurfaceModel>& surface, const Conf
   }
   int nodes = 0;
   for (const ZoneUnknowns& z : c.zones) nodes = std::max(nodes, static_cast<int>(z.d.size()));
-  // Rounding moves the solution of the equations, whatever their nodes once they resolve it:
-  // its response is taken on the last round's solution, which the result differs from by
-  // less than the tolerance, with half the nodes (half the cost: on 100-load sweeps at
-  // n = 32 the estimate took 17 % of the time; the error estimates reported stayed the same).
-  const double rounding = rounding_estimate(surface, system, coarser_solution ? *coarser_solution : *current, highest);
-  // Newton's error in the result, where Newton's method reached its tolerance too: there the
-  // residual bounds it only as far as the equations' conditioning allows.
-  if (!newton_error) {
-    newton_error = newton_step(surface, *current, system.newton_corrected(current->configuration()), highest).change;
-  }
   // Not a number: no estimate, and no error of the solution's own to admit gaps within.
   if (!(*newton_error < std::numeric_limits<double>::infinity())) {
     throw BeyondReach("wavecontact::solve_contact: Newton's step from the refined contact at P = " + format(P) +
