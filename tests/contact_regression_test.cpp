@@ -315,3 +315,13 @@ BOOST_AUTO_TEST_CASE(contact_beside_a_narrow_gap_within_its_tolerance_and_estima
     }
   }
 }
+
+// A grid seed that went uphill (campaign seed 54, sweep 87 with 60 loads: m = 0, n = 538 and
+// 902): its conjugate gradients took a direction that was no descent direction, and the seed
+// came back with 270 zones in half a period, about twice as wide as the contact's; no contact
+// settled from it within the budget of 60 s. Now the gap's own direction replaces such a one
+// (grid_seed.cpp), and the load solves alone from the grid's seed.
+BOOST_AUTO_TEST_CASE(grid_seed_of_steep_fine_roughness) {
+  const Surface s(WavinessParams{1, 10, 0, 1}, {{0.015326863065377999, 538}, {0.0067486167106125478, 902}});
+  checked_contact(s, 3.2093096488738837, 1e-10, "seed 54, sweep 87");
+}
