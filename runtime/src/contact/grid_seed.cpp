@@ -81,25 +81,31 @@ std::vector<double> grid_pressure(const std::vector<double>& clearance, double E
       gap[i] -= approach;
       if (p[i] > 0) G += weight(i) * gap[i] * gap[i];
     }
-    double along = 0;
+    // The direction's response, and the gap along it and its curvature on the cells in contact.
+    const auto measure = [&](double& along, double& curvature) {
+      compliance.apply(direction, response);
+      double response_mean = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (p[i] > 0) response_mean += weight(i) * response[i];
+      }
+      response_mean /= contact;
+      along = 0, curvature = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (p[i] > 0) {
+          along += weight(i) * gap[i] * direction[i];
+          curvature += weight(i) * (response[i] - response_mean) * direction[i];
+        }
+      }
+    };
     for (std::size_t i = 0; i < n; ++i) {
       direction[i] = p[i] > 0 ? gap[i] + (conjugate ? G / G_before * direction[i] : 0.0) : 0.0;
-      along += weight(i) * gap[i] * direction[i];
-    }
-    if (!(along > 0)) {
-      for (std::size_t i = 0; i < n; ++i) direction[i] = p[i] > 0 ? gap[i] : 0.0;
-      along = G;
     }
     G_before = G;
-    compliance.apply(direction, response);
-    double response_mean = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (p[i] > 0) response_mean += weight(i) * response[i];
-    }
-    response_mean /= contact;
-    double curvature = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (p[i] > 0) curvature += weight(i) * (response[i] - response_mean) * direction[i];
+    double along = 0, curvature = 0;
+    measure(along, curvature);
+    if (!(along > 0)) {
+      for (std::size_t i = 0; i < n; ++i) direction[i] = p[i] > 0 ? gap[i] : 0.0;
+      measure(along, curvature);
     }
     const double step = curvature != 0 ? along / curvature : 0.0;
     before = p;
