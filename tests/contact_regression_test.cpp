@@ -20,12 +20,12 @@ using wavecontact::test::check_contact;
 
 namespace {
 
-// The contact at P solved to `tolerance`, its estimate within it, and a contact (check_contact).
 // The work budget a guard against a solve that does not end, not a timing: under the
 // sanitizers, beside the other tests, seed 41's sweep 10 below (45 s alone there, 5 s in a
 // release build) spent the default 60 s.
 constexpr double budget_seconds = 600;
 
+// The contact at P solved to `tolerance`, its estimate within it, and a contact (check_contact).
 Contact checked_contact(const Surface& s, double P, double tolerance, const std::string& what) {
   const Contact c = solve_contact(s, P, SolverOptions(tolerance, 0, budget_seconds));
   BOOST_TEST(c.error_estimate() <= tolerance, what << ": estimate " << c.error_estimate());
