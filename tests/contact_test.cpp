@@ -380,6 +380,22 @@ BOOST_AUTO_TEST_CASE(a_spent_budget_names_the_lowest_residual) {
   }
 }
 
+// Beyond the shapes the campaigns vouch for (m <= 35), a load the solver cannot reach is
+// refused, never answered with a contact that is none: on the near-square wave m = 796 the
+// full contact holds a tension of -84.5 on the wall at b1/2, and the two zones that would open
+// a gap there close it again (campaign seed 62, sweep 105; docs/campaigns.md, *Beyond m = 35*).
+// Whatever a later solver makes of it, what it returns must be a contact, and a refusal names
+// the load.
+BOOST_AUTO_TEST_CASE(near_square_wave_beyond_reach_is_refused_not_answered) {
+  const Surface s(WavinessParams{1, 10, 796.09932275018775, 1}, {{0.2, 10}, {0.2, 4}});
+  try {
+    check_contact(solve_contact(s, 457.5116238196093, SolverOptions(1e-10, 0, 120)), 10, "seed 62, sweep 105");
+  } catch (const BeyondReach& e) {  // refused: the message names the load
+    const std::string message = e.what();
+    BOOST_TEST(message.find("P = 457.5116238196093") != std::string::npos, message);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(invalid_input_is_refused) {
   const Surface s(WavinessParams{1, 10, 2, 1});
   for (double P : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
