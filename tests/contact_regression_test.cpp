@@ -160,6 +160,21 @@ BOOST_AUTO_TEST_CASE(narrow_kink_window_next_to_an_end) {
   }
 }
 
+// The near-square wave m = 121.6 (campaign seed 62, sweep 9 with 16 loads, m up to 1000):
+// its top zone ends 6.7e-5 past the kink, on the wall the wave curve turns into there, with a
+// window of 3.2e-5 that held 11 of the zone's 4096 working nodes. Their series wiggled next to
+// the end, a tension of -0.168 (curvature 5e13); cut, it came back 400 times, and the load
+// was refused after 18 s. Such a zone now doubles its nodes before it is cut.
+BOOST_AUTO_TEST_CASE(tension_of_an_unresolved_kink_window_grows_the_zone) {
+  const Surface s(WavinessParams{1, 10, 121.63164804163105, 1},
+                  {{0.0015830787550563578, 198}, {0.0011811764728862325, 140}});
+  const Contact c = checked_contact(s, 102.3787538590612, 1e-10, "m = 121.6 at P = 102.38");
+  const auto top = top_zone(c);
+  BOOST_TEST_REQUIRE((top != c.zones().end()));
+  BOOST_TEST(top->x_end > 5.0);
+  BOOST_TEST(top->x_end < 5.0 + 1e-3);
+}
+
 // Two contacts reported above their tolerance while the heights at a zone's nodes were taken
 // at the nodes' rounded angles (zone_heights_test): that rounding times the heights' slope
 // was noise that the zone's coefficients multiply by j / h, and the refinement's change grew

@@ -39,6 +39,14 @@ inline constexpr int most_nodes = 16384;
 inline constexpr int most_kinked_nodes = 32768;
 inline constexpr int most_working_nodes = 4096;  // while settling, the zones are what matters
 
+// The nodes a kink window needs for its own shape: fewer, a zone's series wiggles where the
+// window meets the nodes crowding towards a near end (settle), and its changes as the nodes
+// double need not fall yet (refine).
+inline constexpr double least_window_nodes = 32;
+// Whether a zone's kink window holds fewer than least_window_nodes of its nodes (false for a
+// zone without a window).
+bool window_unresolved(const SurfaceModel& surface, const ZoneUnknowns& z);
+
 // A guess for settle at the load P from the contacts at the last loads of a sweep: with the
 // contact before it of the same zones and nodes, each end, coefficient and C extrapolated
 // linearly in the load (up to twice the step between the two), else the last contact; each

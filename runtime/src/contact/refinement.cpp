@@ -10,7 +10,6 @@
 
 #include "active_set.hpp"
 #include "constants.hpp"
-#include "kink_correction.hpp"
 #include "trace.hpp"
 #include "support/parallel.hpp"
 #include "support/validate.hpp"
@@ -22,9 +21,6 @@
 namespace wavecontact::detail {
 
 namespace {
-
-// The nodes a kink window needs for its own shape before a zone's changes fall (refine).
-constexpr double least_window_nodes = 32;
 
 // How far two solutions of one topology differ: the ends (to the period) and, on each zone,
 // the pressure at the points that sample a's extrema (to the largest pressure), short of a
@@ -54,13 +50,6 @@ std::vector<double> zone_differences(const ContactSolution& a, const ContactSolu
     difference[k] = worst;
   });
   return difference;
-}
-
-// Whether a zone's kink window holds fewer than least_window_nodes of its nodes (false for a
-// zone without a window).
-bool window_unresolved(const SurfaceModel& surface, const ZoneUnknowns& z) {
-  const std::shared_ptr<const KinkCorrection> window = KinkCorrection::of(surface, z.geometry, z.kink_window);
-  return window && window->nodes_within(z.geometry, z.d.size()) < least_window_nodes;
 }
 
 // How far rounding moves the contact: the response to a shift of each zone's T_0 row by the
