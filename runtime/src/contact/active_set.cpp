@@ -109,7 +109,7 @@ bool grow_nodes(Configuration& c, const SurfaceModel& surface, double limit,
 // Such a tension may be the series' own wiggle: a top zone ending 6.7e-5 past the kink of the
 // near-square wave m = 121.6 (window 3.2e-5, 11 of its 4096 nodes within it; n = 198 and 140,
 // P = 102.38, campaign seed 62, sweep 9 with 16 loads) showed -0.168 next to its end, and cut,
-// came back with it 400 times; on 16384 nodes it has none.
+// came back with it 400 times; on 8192 nodes it has none.
 bool grow_unresolved_windows(Configuration& c, const SurfaceModel& surface, const std::vector<Tension>& tensions) {
   bool grown = false;
   for (std::size_t k = 0; k < c.zones.size(); ++k) {
